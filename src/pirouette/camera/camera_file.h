@@ -22,7 +22,10 @@ CameraModel ParseCameraNode(const YAML::Node& node, const std::string& file,
                             const std::string& field_prefix);
 
 // Writes `camera` as a camera file that LoadCameraFile reads back to the same
-// values (atomically: a temporary file, then a rename).
+// values (atomically: a temporary file beside `path`, then a rename). Any
+// CameraModel can be written. Throws std::runtime_error ("cannot write
+// <path>: <step>: <reason>") when the file cannot be written; the temporary
+// file is then removed and a file already at `path` is left as it was.
 void SaveCameraFile(const CameraModel& camera, const std::string& path);
 
 }  // namespace pirouette::camera

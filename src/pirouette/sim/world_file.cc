@@ -3,13 +3,9 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <iterator>
 #include <optional>
@@ -23,277 +19,26 @@
 #include <fmt/format.h>
 
 #include "pirouette/camera/camera_file.h"
+#include "pirouette/camera/yaml_fields.h"
 #include "pirouette/core/angle.h"
-#include "pirouette/core/input_error.h"
 
 namespace pirouette::sim {
 namespace {
 
-// ---------------------------------------------------------------------------
-// Reading checked values out of YAML. (camera/camera_file.cc holds the same small
-// toolkit; the two files are the only YAML readers of the input formats.)
-
-// The 1-based line of a node, or 0 when yaml-cpp knows none.
-int LineOf(const YAML::Node& node) {
-  const YAML::Mark mark = node.Mark();
-  return mark.is_null() ? 0 : mark.line + 1;
-}
-
-std::string JoinPath(const std::string& prefix, std::string_view key) {
-  return prefix.empty() ? std::string(key) : prefix + "." + std::string(key);
-}
-
-// A value in a file: the node, its dotted path for messages ("mount.tilt")
-// and the line to report problems with it at.
-struct Field {
-  YAML::Node node;
-  std::string path;
-  int line = 0;
-};
-
-[[noreturn]] void Fail(const std::string& file, int line, const std::string& path,
-                       const std::string& problem) {
-  throw core::InputError(file, line, path, problem);
-}
-
-[[noreturn]] void Fail(const std::string& file, const Field& field, const std::string& problem) {
-  Fail(file, field.line, field.path, problem);
-}
-
-// What a plain (unquoted) scalar means under YAML 1.2's core schema.
-enum class ScalarKind { kNull, kBool, kNumber, kString };
-
-bool IsDecimal(std::string_view s) {
-  std::size_t i = 0;
-  const auto digits = [&] {
-    const std::size_t start = i;
-    while (i < s.size() && s[i] >= '0' && s[i] <= '9') ++i;
-    return i - start;
-  };
-  if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-  std::size_t mantissa = digits();
-  if (i < s.size() && s[i] == '.') {
-    ++i;
-    mantissa += digits();
-  }
-  if (mantissa == 0) return false;
-  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
-    ++i;
-    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
-    if (digits() == 0) return false;
-  }
-  return i == s.size();
-}
-
-bool IsNonFinite(std::string_view s) {
-  if (!s.empty() && (s[0] == '+' || s[0] == '-')) s.remove_prefix(1);
-  return s == ".inf" || s == ".Inf" || s == ".INF" || s == ".nan" || s == ".NaN" || s == ".NAN";
-}
-
-ScalarKind KindOf(const YAML::Node& node) {
-  if (node.IsNull()) return ScalarKind::kNull;
-  if (node.Tag() == "!") return ScalarKind::kString;  // quoted: a string whatever it reads
-  const std::string& s = node.Scalar();
-  if (s.empty() || s == "~" || s == "null" || s == "Null" || s == "NULL") return ScalarKind::kNull;
-  if (s == "true" || s == "True" || s == "TRUE" || s == "false" || s == "False" || s == "FALSE") {
-    return ScalarKind::kBool;
-  }
-  if (IsDecimal(s) || IsNonFinite(s)) return ScalarKind::kNumber;
-  return ScalarKind::kString;
-}
-
-// "a list", "the string 'abc'", ...: what a node is, for "expected X, got Y".
-std::string Describe(const YAML::Node& node) {
-  if (!node.IsDefined() || node.IsNull()) return "nothing";
-  if (node.IsSequence()) return "a list";
-  if (node.IsMap()) return "a map";
-  switch (KindOf(node)) {
-    case ScalarKind::kNull:
-      return "nothing";
-    case ScalarKind::kBool:
-      return "the boolean " + node.Scalar();
-    case ScalarKind::kNumber:
-      return "the number " + node.Scalar();
-    case ScalarKind::kString:
-      break;
-  }
-  return "the string '" + node.Scalar() + "'";
-}
-
-// The keys of a map, checked: keys are plain strings, none twice.
-class MapReader {
- public:
-  MapReader(const std::string& file, const Field& field) : file_(file), field_(field) {
-    if (!field.node.IsMap()) {
-      Fail(file_, field_, "expected a map of fields, got " + Describe(field.node));
-    }
-    for (auto it = field.node.begin(); it != field.node.end(); ++it) {
-      const YAML::Node key = it->first;
-      const YAML::Node value = it->second;
-      const int key_line = LineOf(key);
-      if (!key.IsScalar()) {
-        Fail(file_, key_line, field_.path, "a key must be a name, got " + Describe(key));
-      }
-      const std::string& name = key.Scalar();
-      for (const Entry& entry : entries_) {
-        if (entry.key == name) {
-          Fail(file_, key_line, JoinPath(field_.path, name),
-               fmt::format("duplicate key (first given on line {})", entry.key_line));
-        }
-      }
-      entries_.push_back({name, value, key_line});
-    }
-  }
-
-  struct Key {
-    std::string name;
-    int line;
-  };
-  // The keys, in the file's order.
-  std::vector<Key> Keys() const {
-    std::vector<Key> keys;
-    for (const Entry& entry : entries_) keys.push_back({entry.key, entry.key_line});
-    return keys;
-  }
-
-  // Refuses any key not in `allowed`.
-  void AllowOnly(std::initializer_list<std::string_view> allowed) const {
-    for (const Entry& entry : entries_) {
-      if (std::find(allowed.begin(), allowed.end(), entry.key) == allowed.end()) {
-        std::string known;
-        for (const std::string_view key : allowed) {
-          known += (known.empty() ? "" : ", ") + std::string(key);
-        }
-        Fail(file_, entry.key_line, JoinPath(field_.path, entry.key),
-             "unknown key (known keys: " + known + ")");
-      }
-    }
-  }
-
-  std::optional<Field> Optional(std::string_view key) const {
-    for (const Entry& entry : entries_) {
-      if (entry.key == key) {
-        // A null value's mark is where the next token starts: report the key's line.
-        const int line = entry.value.IsNull() ? entry.key_line : LineOf(entry.value);
-        return Field{entry.value, JoinPath(field_.path, key), line};
-      }
-    }
-    return std::nullopt;
-  }
-
-  // A missing key is reported at the line of the map that lacks it.
-  Field Required(std::string_view key) const {
-    std::optional<Field> field = Optional(key);
-    if (!field) Fail(file_, field_.line, JoinPath(field_.path, key), "missing required key");
-    return *field;
-  }
-
- private:
-  struct Entry {
-    std::string key;
-    YAML::Node value;
-    int key_line;
-  };
-  const std::string& file_;
-  Field field_;
-  std::vector<Entry> entries_;
-};
-
-MapReader ReadMap(const std::string& file, const Field& field,
-                  std::initializer_list<std::string_view> allowed) {
-  MapReader map(file, field);
-  map.AllowOnly(allowed);
-  return map;
-}
-
-// A finite number. `item` (e.g. "item 2 of 3: ") prefixes messages about one
-// number of a list.
-double ReadNumber(const std::string& file, const Field& field, const std::string& item = "") {
-  const YAML::Node& node = field.node;
-  if (!node.IsScalar() || KindOf(node) != ScalarKind::kNumber) {
-    Fail(file, field, item + "expected a number, got " + Describe(node));
-  }
-  std::string_view text = node.Scalar();
-  if (IsNonFinite(text)) Fail(file, field, item + "expected a finite number, got " + node.Scalar());
-  if (text.front() == '+') text.remove_prefix(1);
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-    Fail(file, field, item + "the number " + node.Scalar() + " is out of range");
-  }
-  return value;
-}
-
-// The items of a list, each with its own line (the list's path is kept).
-std::vector<Field> ReadList(const std::string& file, const Field& field, const std::string& what) {
-  if (!field.node.IsSequence()) {
-    Fail(file, field, "expected " + what + ", got " + Describe(field.node));
-  }
-  std::vector<Field> items;
-  for (const YAML::Node& item : field.node) {
-    const int line = LineOf(item);
-    items.push_back({item, field.path, line > 0 ? line : field.line});
-  }
-  return items;
-}
-
-// A list of exactly `count` finite numbers, with the items they came from.
-struct Numbers {
-  std::vector<double> values;
-  std::vector<Field> items;
-};
-
-Numbers ReadNumbers(const std::string& file, const Field& field, std::size_t count) {
-  const std::string what = fmt::format("a list of {} numbers", count);
-  Numbers numbers{{}, ReadList(file, field, what)};
-  if (numbers.items.size() != count) {
-    Fail(file, field, fmt::format("expected {}, got {} items", what, numbers.items.size()));
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    numbers.values.push_back(
-        ReadNumber(file, numbers.items[i], fmt::format("item {} of {}: ", i + 1, count)));
-  }
-  return numbers;
-}
-
-// A string proper: quoted, or plain and not a number, boolean or null.
-std::string ReadString(const std::string& file, const Field& field) {
-  if (!field.node.IsScalar() || KindOf(field.node) != ScalarKind::kString) {
-    Fail(file, field, "expected a string, got " + Describe(field.node));
-  }
-  return field.node.Scalar();
-}
-
-// ---------------------------------------------------------------------------
-// Files.
-
-// The whole of a file, or an InputError naming it.
-std::string ReadFileText(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) Fail(path, 0, "", "no such file");
-  if (fs::is_directory(status)) Fail(path, 0, "", "is a folder, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) Fail(path, 0, "", std::string("cannot open: ") + std::strerror(errno));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) Fail(path, 0, "", "cannot read");
-  return text;
-}
-
-// Parses YAML text; malformed YAML or an empty document is an InputError.
-YAML::Node ParseYaml(const std::string& text, const std::string& file) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    Fail(file, e.mark.is_null() ? 0 : e.mark.line + 1, "", "malformed YAML: " + e.msg);
-  } catch (const YAML::Exception& e) {
-    Fail(file, 0, "", std::string("malformed YAML: ") + e.what());
-  }
-  if (!root.IsDefined() || root.IsNull()) Fail(file, 0, "", "the file is empty");
-  return root;
-}
+using camera::DescribeNode;
+using camera::JoinFieldPath;
+using camera::LineOf;
+using camera::NumberList;
+using camera::ReadList;
+using camera::ReadMap;
+using camera::ReadNumber;
+using camera::ReadNumbers;
+using camera::ReadString;
+using camera::ScalarKind;
+using camera::ScalarKindOf;
+using camera::ThrowInputError;
+using camera::YamlField;
+using camera::YamlMap;
 
 // ---------------------------------------------------------------------------
 // The world file's values.
@@ -304,64 +49,65 @@ std::string Item(std::size_t i, std::size_t count) {
   return fmt::format("item {} of {}: ", i + 1, count);
 }
 
-double ReadPositive(const std::string& file, const Field& field) {
+double ReadPositive(const std::string& file, const YamlField& field) {
   const double value = ReadNumber(file, field);
-  if (!(value > 0.0)) Fail(file, field, fmt::format("must be > 0, got {}", value));
+  if (!(value > 0.0)) ThrowInputError(file, field, fmt::format("must be > 0, got {}", value));
   return value;
 }
 
-double ReadNonNegative(const std::string& file, const Field& field) {
+double ReadNonNegative(const std::string& file, const YamlField& field) {
   const double value = ReadNumber(file, field);
-  if (!(value >= 0.0)) Fail(file, field, fmt::format("must be >= 0, got {}", value));
+  if (!(value >= 0.0)) ThrowInputError(file, field, fmt::format("must be >= 0, got {}", value));
   return value;
 }
 
-double ReadFraction(const std::string& file, const Field& field) {
+double ReadFraction(const std::string& file, const YamlField& field) {
   const double value = ReadNumber(file, field);
   if (!(value >= 0.0 && value <= 1.0)) {
-    Fail(file, field, fmt::format("must lie in [0, 1], got {}", value));
+    ThrowInputError(file, field, fmt::format("must lie in [0, 1], got {}", value));
   }
   return value;
 }
 
 // [x, y]: a point.
-Eigen::Vector2d ReadPoint(const std::string& file, const Field& field) {
-  const Numbers xy = ReadNumbers(file, field, 2);
+Eigen::Vector2d ReadPoint(const std::string& file, const YamlField& field) {
+  const NumberList xy = ReadNumbers(file, field, 2);
   return {xy.values[0], xy.values[1]};
 }
 
 // [x, y]: a size, both > 0.
-Eigen::Vector2d ReadSize(const std::string& file, const Field& field) {
-  const Numbers xy = ReadNumbers(file, field, 2);
+Eigen::Vector2d ReadSize(const std::string& file, const YamlField& field) {
+  const NumberList xy = ReadNumbers(file, field, 2);
   for (std::size_t i = 0; i < 2; ++i) {
     if (!(xy.values[i] > 0.0)) {
-      Fail(file, xy.items[i], Item(i, 2) + fmt::format("must be > 0, got {}", xy.values[i]));
+      ThrowInputError(file, xy.items[i],
+                      Item(i, 2) + fmt::format("must be > 0, got {}", xy.values[i]));
     }
   }
   return {xy.values[0], xy.values[1]};
 }
 
 // [r, g, b]: whole numbers 0..255.
-core::Rgb ReadColour(const std::string& file, const Field& field) {
+core::Rgb ReadColour(const std::string& file, const YamlField& field) {
   const std::string what = "a colour [r, g, b] of whole numbers 0..255";
-  const std::vector<Field> items = ReadList(file, field, what);
+  const std::vector<YamlField> items = ReadList(file, field, what);
   if (items.size() != 3) {
-    Fail(file, field, fmt::format("expected {}, got {} items", what, items.size()));
+    ThrowInputError(file, field, fmt::format("expected {}, got {} items", what, items.size()));
   }
   std::uint8_t channels[3] = {0, 0, 0};
   for (std::size_t i = 0; i < 3; ++i) {
     const double value = ReadNumber(file, items[i], Item(i, 3));
     if (value != std::floor(value) || value < 0.0 || value > 255.0) {
-      Fail(file, items[i],
-           Item(i, 3) +
-               fmt::format("expected a whole number 0..255, got {}", items[i].node.Scalar()));
+      ThrowInputError(file, items[i],
+                      Item(i, 3) + fmt::format("expected a whole number 0..255, got {}",
+                                               items[i].node.Scalar()));
     }
     channels[i] = static_cast<std::uint8_t>(value);
   }
   return {channels[0], channels[1], channels[2]};
 }
 
-Field Index(const Field& item, std::size_t i) {
+YamlField Index(const YamlField& item, std::size_t i) {
   return {item.node, fmt::format("{}[{}]", item.path, i), item.line};
 }
 
@@ -439,8 +185,8 @@ std::optional<std::string> PolygonProblem(const std::vector<Eigen::Vector2d>& po
 // ---------------------------------------------------------------------------
 // Sections of the file.
 
-Floor ReadFloor(const std::string& file, const Field& field) {
-  const MapReader map = ReadMap(file, field, {"size", "colour", "texture"});
+Floor ReadFloor(const std::string& file, const YamlField& field) {
+  const YamlMap map = ReadMap(file, field, {"size", "colour", "texture"});
   Floor floor;
   floor.size = ReadSize(file, map.Required("size"));
   floor.colour = ReadColour(file, map.Required("colour"));
@@ -448,8 +194,8 @@ Floor ReadFloor(const std::string& file, const Field& field) {
   return floor;
 }
 
-BoundaryWalls ReadWalls(const std::string& file, const Field& field) {
-  const MapReader map = ReadMap(file, field, {"height", "thickness", "colour"});
+BoundaryWalls ReadWalls(const std::string& file, const YamlField& field) {
+  const YamlMap map = ReadMap(file, field, {"height", "thickness", "colour"});
   BoundaryWalls walls;
   walls.height = ReadPositive(file, map.Required("height"));
   walls.thickness = ReadPositive(file, map.Required("thickness"));
@@ -458,29 +204,29 @@ BoundaryWalls ReadWalls(const std::string& file, const Field& field) {
 }
 
 // One item of `obstacles`: a map with one key, its shape.
-Solid ReadObstacle(const std::string& file, const Field& field) {
+Solid ReadObstacle(const std::string& file, const YamlField& field) {
   static constexpr std::string_view kShapes[] = {"box", "cylinder", "wall", "prism"};
-  const MapReader item(file, field);
-  const std::vector<MapReader::Key> keys = item.Keys();
+  const YamlMap item(file, field);
+  const std::vector<YamlMap::Key> keys = item.Keys();
   if (keys.size() != 1) {
     std::string names;
     for (const auto& key : keys) names += (names.empty() ? " (" : ", ") + key.name;
     if (!names.empty()) names += ")";
-    Fail(file, field,
-         fmt::format("an obstacle has exactly one key, its shape (box, cylinder, wall or prism); "
-                     "got {}{}",
-                     keys.size(), names));
+    ThrowInputError(
+        file, field,
+        fmt::format("an obstacle has exactly one key, its shape (box, cylinder, wall or prism); "
+                    "got {}{}",
+                    keys.size(), names));
   }
   const std::string& shape = keys[0].name;
   if (std::find(std::begin(kShapes), std::end(kShapes), shape) == std::end(kShapes)) {
-    Fail(file, keys[0].line, JoinPath(field.path, shape),
-         "unknown shape (expected box, cylinder, wall or prism)");
+    ThrowInputError(file, keys[0].line, JoinFieldPath(field.path, shape),
+                    "unknown shape (expected box, cylinder, wall or prism)");
   }
-  const Field shape_field = item.Required(shape);
+  const YamlField shape_field = item.Required(shape);
   try {
     if (shape == "box") {
-      const MapReader map =
-          ReadMap(file, shape_field, {"centre", "size", "yaw", "height", "colour"});
+      const YamlMap map = ReadMap(file, shape_field, {"centre", "size", "yaw", "height", "colour"});
       const Eigen::Vector2d centre = ReadPoint(file, map.Required("centre"));
       const Eigen::Vector2d size = ReadSize(file, map.Required("size"));
       double yaw_deg = 0.0;
@@ -490,7 +236,7 @@ Solid ReadObstacle(const std::string& file, const Field& field) {
       return MakeBox(centre, size, core::DegToRad(yaw_deg), height, colour);
     }
     if (shape == "cylinder") {
-      const MapReader map = ReadMap(file, shape_field, {"centre", "radius", "height", "colour"});
+      const YamlMap map = ReadMap(file, shape_field, {"centre", "radius", "height", "colour"});
       const Eigen::Vector2d centre = ReadPoint(file, map.Required("centre"));
       const double radius = ReadPositive(file, map.Required("radius"));
       const double height = ReadPositive(file, map.Required("height"));
@@ -498,21 +244,23 @@ Solid ReadObstacle(const std::string& file, const Field& field) {
       return MakeCylinder(centre, radius, height, colour);
     }
     if (shape == "wall") {
-      const MapReader map =
+      const YamlMap map =
           ReadMap(file, shape_field, {"from", "to", "thickness", "height", "colour"});
       const Eigen::Vector2d from = ReadPoint(file, map.Required("from"));
-      const Field to_field = map.Required("to");
+      const YamlField to_field = map.Required("to");
       const Eigen::Vector2d to = ReadPoint(file, to_field);
-      if (from == to) Fail(file, to_field, "the same point as `from`: the wall has no length");
+      if (from == to) {
+        ThrowInputError(file, to_field, "the same point as `from`: the wall has no length");
+      }
       const double thickness = ReadPositive(file, map.Required("thickness"));
       const double height = ReadPositive(file, map.Required("height"));
       const core::Rgb colour = ReadColour(file, map.Required("colour"));
       return MakeWall(from, to, thickness, height, colour);
     }
     // prism
-    const MapReader map = ReadMap(file, shape_field, {"points", "height", "colour"});
-    const Field points_field = map.Required("points");
-    const std::vector<Field> items = ReadList(file, points_field, "a list of points [x, y]");
+    const YamlMap map = ReadMap(file, shape_field, {"points", "height", "colour"});
+    const YamlField points_field = map.Required("points");
+    const std::vector<YamlField> items = ReadList(file, points_field, "a list of points [x, y]");
     std::vector<Eigen::Vector2d> points;
     for (std::size_t i = 0; i < items.size(); ++i) {
       points.push_back(ReadPoint(file, Index(items[i], i)));
@@ -520,28 +268,29 @@ Solid ReadObstacle(const std::string& file, const Field& field) {
     // A closed ring (the last point repeating the first) is the same polygon.
     if (points.size() > 3 && points.front() == points.back()) points.pop_back();
     if (points.size() < 3) {
-      Fail(file, points_field,
-           fmt::format("a prism needs at least 3 points, got {}", points.size()));
+      ThrowInputError(file, points_field,
+                      fmt::format("a prism needs at least 3 points, got {}", points.size()));
     }
-    if (const auto problem = PolygonProblem(points)) Fail(file, points_field, *problem);
+    if (const auto problem = PolygonProblem(points)) ThrowInputError(file, points_field, *problem);
     const double height = ReadPositive(file, map.Required("height"));
     const core::Rgb colour = ReadColour(file, map.Required("colour"));
     return MakePrism(std::move(points), height, colour);
   } catch (const std::invalid_argument& e) {
     // The builders' own checks; the ones above should leave none to fail.
-    Fail(file, shape_field, e.what());
+    ThrowInputError(file, shape_field, e.what());
   }
 }
 
-Light ReadLight(const std::string& file, const Field& field) {
-  const MapReader map = ReadMap(file, field, {"ambient", "direction", "intensity"});
+Light ReadLight(const std::string& file, const YamlField& field) {
+  const YamlMap map = ReadMap(file, field, {"ambient", "direction", "intensity"});
   Light light;
   if (const auto ambient = map.Optional("ambient")) light.ambient = ReadFraction(file, *ambient);
   if (const auto direction = map.Optional("direction")) {
-    const Numbers xyz = ReadNumbers(file, *direction, 3);
+    const NumberList xyz = ReadNumbers(file, *direction, 3);
     if (!(xyz.values[2] < 0.0)) {
-      Fail(file, *direction,
-           fmt::format("the light must travel downward (z < 0), got z = {}", xyz.values[2]));
+      ThrowInputError(
+          file, *direction,
+          fmt::format("the light must travel downward (z < 0), got z = {}", xyz.values[2]));
     }
     light.direction = {xyz.values[0], xyz.values[1], xyz.values[2]};
   }
@@ -552,31 +301,33 @@ Light ReadLight(const std::string& file, const Field& field) {
 }
 
 // A camera file's name (relative to the world file's folder) or the camera's fields inline.
-camera::CameraModel ReadCamera(const std::string& file, const Field& field) {
+camera::CameraModel ReadCamera(const std::string& file, const YamlField& field) {
   namespace fs = std::filesystem;
   if (field.node.IsMap()) return camera::ParseCameraNode(field.node, file, field.path);
-  if (!field.node.IsScalar() || KindOf(field.node) != ScalarKind::kString) {
-    Fail(file, field,
-         "expected a camera file's name or the camera's fields (a map), got " +
-             Describe(field.node));
+  if (!field.node.IsScalar() || ScalarKindOf(field.node) != ScalarKind::kString) {
+    ThrowInputError(file, field,
+                    "expected a camera file's name or the camera's fields (a map), got " +
+                        DescribeNode(field.node));
   }
   const std::string& name = field.node.Scalar();
-  if (name.empty()) Fail(file, field, "expected a camera file's name, got an empty string");
+  if (name.empty()) {
+    ThrowInputError(file, field, "expected a camera file's name, got an empty string");
+  }
   fs::path path(name);
   if (path.is_relative()) path = fs::path(file).parent_path() / path;
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (!fs::exists(status)) {
-    Fail(file, field, fmt::format("camera file '{}' not found", path.string()));
+    ThrowInputError(file, field, fmt::format("camera file '{}' not found", path.string()));
   }
   if (fs::is_directory(status)) {
-    Fail(file, field, fmt::format("camera file '{}' is a folder", path.string()));
+    ThrowInputError(file, field, fmt::format("camera file '{}' is a folder", path.string()));
   }
   return camera::LoadCameraFile(path.string());
 }
 
-OdometryNoise ReadOdometryNoise(const std::string& file, const Field& field) {
-  const MapReader map = ReadMap(file, field, {"translation", "rotation"});
+OdometryNoise ReadOdometryNoise(const std::string& file, const YamlField& field) {
+  const YamlMap map = ReadMap(file, field, {"translation", "rotation"});
   OdometryNoise noise;
   if (const auto value = map.Optional("translation")) {
     noise.translation = ReadNonNegative(file, *value);
@@ -602,19 +353,19 @@ std::string_view ShapeName(Solid::Kind kind) {
 }
 
 World ParseWorld(const YAML::Node& node, const std::string& file) {
-  const Field root{node, "", LineOf(node)};
-  const MapReader map(file, root);
+  const YamlField root{node, "", LineOf(node)};
+  const YamlMap map(file, root);
   // The format first: a file of another kind gets that said, not a list of unknown keys.
-  const Field format_field = map.Required("format");
+  const YamlField format_field = map.Required("format");
   const std::string format = ReadString(file, format_field);
   if (format != kFormat) {
-    Fail(file, format_field, fmt::format("expected '{}', got '{}'", kFormat, format));
+    ThrowInputError(file, format_field, fmt::format("expected '{}', got '{}'", kFormat, format));
   }
   map.AllowOnly({"format", "name", "floor", "walls", "obstacles", "light", "robot"});
 
-  const Field name_field = map.Required("name");
+  const YamlField name_field = map.Required("name");
   std::string name = ReadString(file, name_field);
-  if (name.empty()) Fail(file, name_field, "must not be empty");
+  if (name.empty()) ThrowInputError(file, name_field, "must not be empty");
 
   const Floor floor = ReadFloor(file, map.Required("floor"));
 
@@ -624,7 +375,7 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
   std::vector<Solid> obstacles;
   std::vector<int> obstacle_lines;
   if (const auto field = map.Optional("obstacles")) {
-    const std::vector<Field> items = ReadList(file, *field, "a list of obstacles");
+    const std::vector<YamlField> items = ReadList(file, *field, "a list of obstacles");
     for (std::size_t i = 0; i < items.size(); ++i) {
       obstacles.push_back(ReadObstacle(file, Index(items[i], i)));
       obstacle_lines.push_back(items[i].line);
@@ -634,10 +385,10 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
   Light light;
   if (const auto field = map.Optional("light")) light = ReadLight(file, *field);
 
-  const MapReader robot =
+  const YamlMap robot =
       ReadMap(file, map.Required("robot"), {"start", "radius", "camera", "odometry_noise"});
-  const Field start_field = robot.Required("start");
-  const Numbers start = ReadNumbers(file, start_field, 3);
+  const YamlField start_field = robot.Required("start");
+  const NumberList start = ReadNumbers(file, start_field, 3);
   const core::Pose2 world_T_start(start.values[0], start.values[1],
                                   core::DegToRad(start.values[2]));
   const double radius = ReadPositive(file, robot.Required("radius"));
@@ -650,7 +401,7 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
     world.emplace(std::move(name), floor, walls, obstacles, light,
                   RobotSpec{world_T_start, radius, std::move(camera), noise});
   } catch (const std::invalid_argument& e) {
-    Fail(file, 0, "", e.what());
+    ThrowInputError(file, 0, "", e.what());
   }
 
   // The robot's disc at the start must lie on the floor and touch no obstacle.
@@ -661,18 +412,18 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
     const double to_edge = std::min(
         {centre.x(), centre.y(), floor.size.x() - centre.x(), floor.size.y() - centre.y()});
     if (!(to_edge > radius)) {
-      Fail(file, start_field,
-           fmt::format("{} does not lie on the floor [0, {}] × [0, {}]", disc, floor.size.x(),
-                       floor.size.y()));
+      ThrowInputError(file, start_field,
+                      fmt::format("{} does not lie on the floor [0, {}] × [0, {}]", disc,
+                                  floor.size.x(), floor.size.y()));
     }
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
       if (!(obstacles[i].SignedDistance(centre) > radius)) {
-        Fail(file, start_field,
-             fmt::format("{} overlaps obstacles[{}] (the {} on line {})", disc, i,
-                         ShapeName(obstacles[i].kind), obstacle_lines[i]));
+        ThrowInputError(file, start_field,
+                        fmt::format("{} overlaps obstacles[{}] (the {} on line {})", disc, i,
+                                    ShapeName(obstacles[i].kind), obstacle_lines[i]));
       }
     }
-    Fail(file, start_field, disc + " touches something occupied");
+    ThrowInputError(file, start_field, disc + " touches something occupied");
   }
   return std::move(*world);
 }
@@ -680,7 +431,7 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
 }  // namespace
 
 World LoadWorldFile(const std::string& path) {
-  return ParseWorld(ParseYaml(ReadFileText(path), path), path);
+  return ParseWorld(camera::LoadYamlFile(path), path);
 }
 
 }  // namespace pirouette::sim

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace pirouette::cli {
+
+// Exit codes (SPEC.md): 0 done, 1 the run failed, 2 bad usage or bad input.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailed = 1;
+inline constexpr int kExitBadInput = 2;
+
+// One subcommand: its options are added to the app by its Add function, which
+// returns the action to run when the subcommand was given. The action throws
+// core::InputError for bad input (exit 2) and anything else for a failed run
+// (exit 1); main turns both into a message on standard error.
+struct Command {
+  CLI::App* app = nullptr;
+  std::function<void()> run;
+};
+
+Command AddRenderCommand(CLI::App& parent);
+
+}  // namespace pirouette::cli

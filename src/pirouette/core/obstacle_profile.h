@@ -1,0 +1,30 @@
+#pragma once
+
+#include <vector>
+
+namespace pirouette::core {
+
+// What one bearing of a camera frame says about the floor around the robot
+// (Taylor, Geva & Boles 2005, §3: the floor's edge read as a range sensor).
+enum class ReadingKind {
+  kHit,    // the floor ends at range_m, within the maximum range: an obstacle's base
+  kClear,  // floor is seen all the way out to the maximum range; range_m = max range
+  kBlind,  // no floor is seen at all at this bearing: something fills the view;
+           // range_m = the range of the nearest floor point the camera could see there
+};
+
+// One reading, in the robot's frame at the moment the frame was taken.
+struct RangeReading {
+  double bearing_rad = 0.0;  // counter-clockwise from the robot's forward axis
+  double range_m = 0.0;      // from the robot's centre of rotation, on the floor
+  ReadingKind kind = ReadingKind::kHit;
+};
+
+// The obstacle profile of one frame: one reading per image column, left to
+// right (so bearings decrease), and the maximum range they were read with.
+struct ObstacleProfile {
+  std::vector<RangeReading> readings;
+  double max_range_m = 0.0;
+};
+
+}  // namespace pirouette::core
