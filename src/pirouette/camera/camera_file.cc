@@ -1,14 +1,10 @@
 #include "pirouette/camera/camera_file.h"
 
-#include <fcntl.h>
-#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
-#include <cerrno>
 #include <charconv>
 #include <cstddef>
 #include <cstdio>
-#include <cstring>
 #include <initializer_list>
 #include <optional>
 #include <stdexcept>
@@ -209,36 +205,8 @@ std::string CameraText(const CameraModel& camera) {
   EmitNumbers(out, {k[0], k[1], k[2]});
   out << YAML::EndMap;
   out << YAML::EndMap;
-  if (!out.good()) throw std::logic_error("SaveCameraFile: YAML emitter: " + out.GetLastError());
+  if (!out.good()) throw std::logic_error("CameraFileText: YAML emitter: " + out.GetLastError());
   return std::string(out.c_str()) + "\n";
-}
-
-// Writes `text` to a temporary file beside `path`, flushed, then renamed over it.
-void WriteAtomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  const auto fail = [&](const char* what) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    throw std::runtime_error("cannot write " + path + ": " + what + ": " + reason);
-  };
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail("open");
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      ::close(fd);
-      fail("write");
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0) {
-    ::close(fd);
-    fail("fsync");
-  }
-  if (::close(fd) != 0) fail("close");
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) fail("rename");
 }
 
 }  // namespace
@@ -256,8 +224,6 @@ CameraModel ParseCameraNode(const YAML::Node& node, const std::string& file,
 // refuses what no camera file may hold (a tilt outside (-90°, 90°), values
 // that are not finite, a negative vignetting k), and TiltText writes a tilt
 // inside (-90°, 90°) as degrees inside (-90, 90).
-void SaveCameraFile(const CameraModel& camera, const std::string& path) {
-  WriteAtomically(path, CameraText(camera));
-}
+std::string CameraFileText(const CameraModel& camera) { return CameraText(camera); }
 
 }  // namespace pirouette::camera

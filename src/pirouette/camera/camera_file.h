@@ -21,11 +21,10 @@ CameraModel LoadCameraFile(const std::string& path);
 CameraModel ParseCameraNode(const YAML::Node& node, const std::string& file,
                             const std::string& field_prefix);
 
-// Writes `camera` as a camera file that LoadCameraFile reads back to the same
-// values (atomically: a temporary file beside `path`, then a rename). Any
-// CameraModel can be written. Throws std::runtime_error ("cannot write
-// <path>: <step>: <reason>") when the file cannot be written; the temporary
-// file is then removed and a file already at `path` is left as it was.
-void SaveCameraFile(const CameraModel& camera, const std::string& path);
+// The text of a camera file (ROS camera_info layout plus `mount` and
+// `vignetting`) that LoadCameraFile reads back to the same values. Any
+// CameraModel can be written. Writing it to disk (atomically) is the
+// application's job: this layer does no I/O beyond reading its input.
+std::string CameraFileText(const CameraModel& camera);
 
 }  // namespace pirouette::camera
