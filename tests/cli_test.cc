@@ -218,4 +218,35 @@ robot: {start: [0.5, 0.5, 0], radius: 0.04, camera: camera.yaml}
   EXPECT_NE(missing.output.find("none.yaml"), std::string::npos) << missing.output;
 }
 
+TEST_F(CliTest, IpmReportPrintsThePapersFigure) {
+  const Result r = RunPirouette("ipm-report --camera " + kWorlds + "/yujin.yaml --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.stdout_only.find("\"max_range_m\": 0.4"), std::string::npos) << r.stdout_only;
+  const Result bad = RunPirouette("ipm-report --camera " + kWorlds + "/yujin.yaml --cell 0");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--cell"), std::string::npos) << bad.output;
+}
+
+TEST_F(CliTest, RopWritesThePolarPlot) {
+  const fs::path out = dir_ / "rop.png";
+  const Result r =
+      RunPirouette("rop --world " + kWorlds +
+                   "/soccer_field.yaml --pose 0.75,0.65,0 --method truth --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(r.stdout_only.empty());
+  const cv::Mat image = cv::imread(out.string());
+  EXPECT_FALSE(image.empty());
+  const Result bad =
+      RunPirouette("rop --world " + kWorlds +
+                   "/soccer_field.yaml --pose 0.75,0.65,0 --method magic --out " + out.string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--method"), std::string::npos) << bad.output;
+}
+
+TEST_F(CliTest, PerceptionEvalRefusesAMissingWorld) {
+  const Result r = RunPirouette("perception-eval --world " + (dir_ / "none.yaml").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("none.yaml"), std::string::npos) << r.output;
+}
+
 }  // namespace

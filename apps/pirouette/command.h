@@ -22,5 +22,10 @@ struct Command {
 };
 
 Command AddRenderCommand(CLI::App& parent);
+Command AddIpmReportCommand(CLI::App& parent);
+Command AddRopCommand(CLI::App& parent);
+Command AddPerceptionEvalCommand(CLI::App& parent);
+Command AddSegmentCommand(CLI::App& parent);
+Command AddSegmentEvalCommand(CLI::App& parent);
 
 }  // namespace pirouette::cli

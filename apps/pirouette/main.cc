@@ -21,6 +21,11 @@ int main(int argc, char** argv) {
 
   const std::vector<Command> commands = {
       AddRenderCommand(app),
+      AddIpmReportCommand(app),
+      AddRopCommand(app),
+      AddPerceptionEvalCommand(app),
+      AddSegmentCommand(app),
+      AddSegmentEvalCommand(app),
   };
 
   try {

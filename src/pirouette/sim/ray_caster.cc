@@ -147,9 +147,33 @@ std::vector<std::uint8_t> RayCaster::FloorMask(const core::Pose2& world_T_robot)
   return mask;
 }
 
+const Eigen::Vector3d& RayCaster::PixelRay(int u, int v) const {
+  return rays_[static_cast<std::size_t>(v) * camera_.width() + u];
+}
+
 bool RayCaster::SeesFreeFloor(const Eigen::Isometry3d& world_T_camera,
                               const Eigen::Vector2d& pixel) const {
+  const double u = pixel.x();
+  const double v = pixel.y();
+  if (u == std::floor(u) && v == std::floor(v) && u >= 0 && v >= 0 && u < camera_.width() &&
+      v < camera_.height()) {
+    // A pixel centre: its ray is precomputed.
+    const Eigen::Vector3d& ray = PixelRay(static_cast<int>(u), static_cast<int>(v));
+    return Cast(world_T_camera.translation(), world_T_camera.linear() * ray).kind ==
+           RayHit::Kind::kFloor;
+  }
   return Cast(world_T_camera, pixel).kind == RayHit::Kind::kFloor;
+}
+
+std::optional<Eigen::Vector2d> RayCaster::FloorPoint(int u, double v) const {
+  if (v != std::floor(v) || v < 0 || v >= camera_.height()) return camera_.FloorPoint({u, v});
+  // CameraModel::FloorPoint from the precomputed ray: the same arithmetic.
+  const Eigen::Isometry3d robot_T_camera = camera_.robot_T_camera();
+  const Eigen::Vector3d ray_robot = robot_T_camera.linear() * PixelRay(u, static_cast<int>(v));
+  if (!(ray_robot.z() < -1e-5)) return std::nullopt;
+  const Eigen::Vector3d origin = robot_T_camera.translation();
+  const double t = -origin.z() / ray_robot.z();
+  return (origin + t * ray_robot).head<2>();
 }
 
 core::ObstacleProfile RayCaster::TrueProfile(const core::Pose2& world_T_robot,
@@ -160,7 +184,7 @@ core::ObstacleProfile RayCaster::TrueProfile(const core::Pose2& world_T_robot,
   profile.readings.reserve(static_cast<std::size_t>(camera_.width()));
   const int bottom = camera_.height() - 1;
   for (int u = 0; u < camera_.width(); ++u) {
-    const auto floor_point = [&](double v) { return camera_.FloorPoint({u, v}); };
+    const auto floor_point = [&](double v) { return FloorPoint(u, v); };
     const auto reading = [](const Eigen::Vector2d& p_robot, double range, core::ReadingKind kind) {
       return core::RangeReading{std::atan2(p_robot.y(), p_robot.x()), range, kind};
     };

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 #include <vector>
 
 #include "pirouette/camera/camera_model.h"
@@ -73,6 +74,10 @@ class RayCaster {
 
  private:
   bool SeesFreeFloor(const Eigen::Isometry3d& world_T_camera, const Eigen::Vector2d& pixel) const;
+  // The camera model's floor point (robot frame) of column u at row v, from
+  // the precomputed ray when v is a whole row.
+  std::optional<Eigen::Vector2d> FloorPoint(int u, double v) const;
+  const Eigen::Vector3d& PixelRay(int u, int v) const;
 
   const World& world_;
   camera::CameraModel camera_;

@@ -20,7 +20,7 @@ camera::CameraModel PaperCamera() {
                              {{0.35, 0.30, 0.40}});
 }
 
-World MakeWorld(Vector2d floor_size, std::optional<BoundaryWalls> walls,
+World MakeWorld(const Vector2d& floor_size, std::optional<BoundaryWalls> walls,
                 std::vector<Solid> obstacles, const camera::CameraModel& camera) {
   Floor floor{floor_size, core::Rgb{25, 25, 25}, 0.0};
   RobotSpec robot{core::Pose2(0.1, 0.1, 0.0), 0.04, camera, {}};

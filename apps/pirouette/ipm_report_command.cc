@@ -1,0 +1,25 @@
+#include <cstdio>
+#include <memory>
+
+#include "apps/pirouette/command.h"
+#include "pirouette/app/ipm_report.h"
+
+namespace pirouette::cli {
+
+Command AddIpmReportCommand(CLI::App& parent) {
+  auto request = std::make_shared<app::IpmReportRequest>();
+  CLI::App* cmd = parent.add_subcommand(
+      "ipm-report",
+      "Print how far 1 pixel of floor-edge error moves the floor point, by range, for a camera, "
+      "and the maximum range where it stays under half a map cell (the paper's rule).\n  "
+      "example: pirouette ipm-report --camera worlds/yujin.yaml");
+  cmd->add_option("--camera", request->camera_path, "camera file (ROS camera_info YAML)")
+      ->required();
+  cmd->add_option("--cell", request->cell_m, "map cell size, metres")->capture_default_str();
+  cmd->add_option("--step", request->step_m, "the table's range step, metres")
+      ->capture_default_str();
+  cmd->add_flag("--json", request->json, "print JSON instead of a table");
+  return {cmd, [request] { std::fputs(app::IpmReport(*request).c_str(), stdout); }};
+}
+
+}  // namespace pirouette::cli

@@ -1,0 +1,48 @@
+#include "pirouette/app/floor_masker.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace pirouette::app {
+
+std::optional<MaskSource> ParseMaskSource(std::string_view name) {
+  if (name == "paper") return MaskSource::kPaper;
+  if (name == "default") return MaskSource::kDefault;
+  if (name == "truth") return MaskSource::kTruth;
+  return std::nullopt;
+}
+
+std::string_view MaskSourceName(MaskSource source) {
+  switch (source) {
+    case MaskSource::kPaper:
+      return "paper";
+    case MaskSource::kDefault:
+      return "default";
+    case MaskSource::kTruth:
+      return "truth";
+  }
+  return "default";
+}
+
+FloorMasker::FloorMasker(MaskSource source, const sim::World& world,
+                         const camera::CameraModel& camera)
+    : source_(source) {
+  if (source == MaskSource::kTruth) {
+    caster_.emplace(world, camera);
+  } else {
+    segmenter_ = vision::MakeFloorSegmenter(source == MaskSource::kPaper
+                                                ? vision::SegmentationMethod::kPaper
+                                                : vision::SegmentationMethod::kDefault,
+                                            camera);
+  }
+}
+
+cv::Mat1b FloorMasker::Mask(const cv::Mat3b& bgr_raw, const core::Pose2& world_T_robot) {
+  if (source_ != MaskSource::kTruth) return segmenter_->Segment(bgr_raw);
+  const std::vector<std::uint8_t> truth = caster_->FloorMask(world_T_robot);
+  cv::Mat1b mask(caster_->camera().height(), caster_->camera().width());
+  std::copy(truth.begin(), truth.end(), mask.begin());
+  return mask;
+}
+
+}  // namespace pirouette::app

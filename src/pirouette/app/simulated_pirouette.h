@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pirouette/core/pose2.h"
+#include "pirouette/robot/robot.h"
+#include "pirouette/sim/renderer.h"
+#include "pirouette/sim/world.h"
+
+namespace pirouette::app {
+
+// The paper's pirouette: 12 turns of 30°.
+inline constexpr int kPirouetteTurns = 12;
+
+// A frame of a simulated pirouette and where the robot truly was.
+struct SimulatedFrame {
+  robot::Frame frame;  // image, odometry (odom_T_robot) and time
+  core::Pose2 world_T_robot;
+};
+
+// A copy of `world` whose robot starts at world_T_robot. Throws
+// core::InputError (naming `what`, e.g. "--pose") when the robot's disc does
+// not fit there.
+sim::World PlaceRobot(const sim::World& world, const core::Pose2& world_T_robot,
+                      const std::string& what);
+
+// One pirouette of the simulated robot (sim::SimRobot, with the world's
+// odometry noise drawn from `seed`) starting at world's robot start: a frame,
+// a turn of 360°/turns, and so on, `turns` frames in all. The odometry frame
+// is the world frame at the start. `renderer` must render `world`.
+std::vector<SimulatedFrame> SimulatePirouette(const sim::World& world, sim::Renderer& renderer,
+                                              std::uint64_t seed, int turns = kPirouetteTurns);
+
+}  // namespace pirouette::app

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "pirouette/vision/vertical_direction_field.h"
+
+namespace pirouette::vision {
+
+struct EdgeMapOptions {
+  double canny_low = 30.0;  // Canny's hysteresis thresholds, on the L2 gradient of 3×3 Sobel
+  double canny_high = 90.0;
+  // An edge pixel whose edge runs within this angle of the world-vertical
+  // direction at that pixel is a vertical edge (the side of an obstacle).
+  double vertical_tolerance_deg = 15.0;
+};
+
+struct EdgeMap {
+  cv::Mat1b edges;     // 255 on every Canny edge pixel
+  cv::Mat1b vertical;  // 255 on the edge pixels judged vertical in the world (a subset)
+};
+
+// Canny edges of an already low-passed colour image, with the near-vertical
+// ones marked (Taylor, Geva & Boles 2005, §5.2). The gradient at a pixel is
+// the 3×3 Sobel gradient of the channel where it is strongest (as OpenCV's
+// Canny does for colour images), so that edges between colours of the same
+// brightness are found. The edge's direction is perpendicular to the
+// gradient; it runs along the world vertical when
+// |gradient · vertical| <= |gradient| · sin(tolerance).
+EdgeMap FindEdges(const cv::Mat3b& bgr, const VerticalDirectionField& vertical,
+                  const EdgeMapOptions& options);
+
+}  // namespace pirouette::vision

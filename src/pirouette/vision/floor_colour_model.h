@@ -1,0 +1,59 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <vector>
+
+namespace pirouette::vision {
+
+struct FloorColourModelOptions {
+  // The weight of a new frame's histogram when the model learns from it
+  // (exponential forgetting): 1 forgets everything before, 0 never adapts.
+  double forgetting = 0.3;
+  // Histogram smoothing: passes of a [1 2 1] / 4 kernel along each axis, so
+  // that colours near those seen also count as floor.
+  int smoothing_passes = 1;
+};
+
+// The floor's colour, learnt online and never configured: a joint histogram
+// in CIE L*a*b* with fine chroma bins (a*, b*) and coarse lightness bins (L*),
+// so that the model separates colours well while shading and light changes,
+// which move mostly L*, move a floor pixel by one lightness bin at most. The
+// first Learn sets it; later ones blend in with exponential forgetting so the
+// model follows the light. A pure function of the frames given (deterministic).
+class FloorColourModel {
+ public:
+  static constexpr int kLightnessBins = 8;
+  static constexpr int kChromaBins = 32;
+  static constexpr int kBins = kLightnessBins * kChromaBins * kChromaBins;
+
+  explicit FloorColourModel(const FloorColourModelOptions& options = {});
+
+  bool learnt() const { return learnt_; }
+
+  // Learns the colours of `bgr` where `region` is non-zero (same size). A
+  // region with no pixel leaves the model as it was.
+  void Learn(const cv::Mat3b& bgr, const cv::Mat1b& region);
+
+  // How floor-like each pixel's colour is, in [0, 1]: the smoothed histogram at
+  // its bin over the histogram's maximum. All zeros before anything is learnt.
+  cv::Mat1f Likelihood(const cv::Mat3b& bgr) const;
+  float Likelihood(const cv::Vec3b& bgr) const { return likelihood_[Bin(bgr)]; }
+
+  // The smoothed, normalised histogram at each pixel's bin: a density over the
+  // bins that sums to 1 (0 before anything is learnt), to compare two models.
+  cv::Mat1f Density(const cv::Mat3b& bgr) const;
+
+  // The histogram bin of a BGR colour (a lookup on its 5 high bits per channel).
+  static int Bin(const cv::Vec3b& bgr);
+
+ private:
+  void UpdateLikelihood();
+
+  FloorColourModelOptions options_;
+  bool learnt_ = false;
+  std::vector<double> histogram_;  // normalised: sums to 1 once learnt
+  std::vector<float> density_;     // smoothed histogram
+  std::vector<float> likelihood_;  // smoothed histogram / its maximum
+};
+
+}  // namespace pirouette::vision

@@ -1,0 +1,65 @@
+#include "pirouette/vision/floor_colour_model.h"
+
+#include <gtest/gtest.h>
+
+namespace pirouette::vision {
+namespace {
+
+const cv::Vec3b kBeige(150, 180, 200);  // BGR
+const cv::Vec3b kRed(40, 40, 200);
+const cv::Vec3b kBlue(200, 60, 30);
+
+TEST(FloorColourModelTest, KnowsNothingBeforeLearning) {
+  const FloorColourModel model;
+  EXPECT_FALSE(model.learnt());
+  EXPECT_EQ(model.Likelihood(kBeige), 0.0f);
+}
+
+TEST(FloorColourModelTest, LearntColourIsFloorAndOthersAreNot) {
+  FloorColourModel model;
+  const cv::Mat3b image(20, 20, kBeige);
+  model.Learn(image, cv::Mat1b(20, 20, std::uint8_t{255}));
+  EXPECT_TRUE(model.learnt());
+  EXPECT_FLOAT_EQ(model.Likelihood(kBeige), 1.0f);
+  EXPECT_LT(model.Likelihood(kRed), 0.01f);
+  // 10% darker: nearly the same chroma, one lightness bin at most away.
+  EXPECT_GT(model.Likelihood(cv::Vec3b(135, 162, 180)), 0.2f);
+}
+
+TEST(FloorColourModelTest, LearnsOnlyInsideTheRegion) {
+  FloorColourModel model;
+  cv::Mat3b image(10, 10, kRed);
+  image(cv::Rect(0, 5, 10, 5)).setTo(kBeige);
+  cv::Mat1b region(10, 10, std::uint8_t{0});
+  region(cv::Rect(0, 5, 10, 5)).setTo(255);
+  model.Learn(image, region);
+  const cv::Mat1f likelihood = model.Likelihood(image);
+  EXPECT_FLOAT_EQ(likelihood(9, 0), 1.0f);
+  EXPECT_LT(likelihood(0, 0), 0.01f);
+}
+
+TEST(FloorColourModelTest, AdaptsWithExponentialForgetting) {
+  FloorColourModelOptions options;
+  options.forgetting = 0.5;
+  FloorColourModel model(options);
+  const cv::Mat1b all(8, 8, std::uint8_t{255});
+  model.Learn(cv::Mat3b(8, 8, kBeige), all);
+  model.Learn(cv::Mat3b(8, 8, kBlue), all);
+  // Half and half now: both are floor.
+  EXPECT_GT(model.Likelihood(kBeige), 0.5f);
+  EXPECT_GT(model.Likelihood(kBlue), 0.5f);
+  for (int i = 0; i < 6; ++i) model.Learn(cv::Mat3b(8, 8, kBlue), all);
+  EXPECT_LT(model.Likelihood(kBeige), 0.05f);  // the old light is forgotten
+  EXPECT_FLOAT_EQ(model.Likelihood(kBlue), 1.0f);
+}
+
+TEST(FloorColourModelTest, EmptyRegionChangesNothing) {
+  FloorColourModel model;
+  model.Learn(cv::Mat3b(4, 4, kBeige), cv::Mat1b(4, 4, std::uint8_t{255}));
+  model.Learn(cv::Mat3b(4, 4, kRed), cv::Mat1b(4, 4, std::uint8_t{0}));
+  EXPECT_FLOAT_EQ(model.Likelihood(kBeige), 1.0f);
+  EXPECT_LT(model.Likelihood(kRed), 0.01f);
+}
+
+}  // namespace
+}  // namespace pirouette::vision

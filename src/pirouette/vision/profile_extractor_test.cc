@@ -1,0 +1,97 @@
+#include "pirouette/vision/profile_extractor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pirouette/camera/range_resolution.h"
+#include "pirouette/core/angle.h"
+
+namespace pirouette::vision {
+namespace {
+
+// The paper's camera (worlds/yujin.yaml).
+camera::CameraModel PaperCamera() {
+  return camera::CameraModel("yujin", 320, 240, {277.13, 277.13, 159.5, 119.5},
+                             {-0.20, 0.05, 0.0, 0.0, 0.0}, {0.11, core::DegToRad(30.0), 0.03},
+                             {{0.35, 0.30, 0.40}});
+}
+
+TEST(ProfileExtractorTest, FloorBelowARowReadsTheRowsHalfWayPoint) {
+  const camera::CameraModel camera = PaperCamera();
+  const camera::InversePerspectiveMap ipm(camera);
+  cv::Mat1b mask(240, 320, uchar{0});
+  mask.rowRange(151, 240).setTo(255);  // rows 151.. floor: the edge at 150.5
+  const core::ObstacleProfile profile = ExtractProfile(mask, ipm, 10.0);
+  ASSERT_EQ(profile.readings.size(), 320u);
+  EXPECT_EQ(profile.max_range_m, 10.0);
+  for (int u = 0; u < 320; ++u) {
+    const Eigen::Vector2d p = *camera.FloorPoint({u, 150.5});
+    const core::RangeReading& r = profile.readings[static_cast<std::size_t>(u)];
+    EXPECT_EQ(r.kind, core::ReadingKind::kHit);
+    EXPECT_NEAR(r.range_m, p.norm(), 2e-4) << u;
+    EXPECT_NEAR(r.bearing_rad, std::atan2(p.y(), p.x()), 1e-3) << u;
+  }
+  // Left to right, bearings decrease.
+  EXPECT_GT(profile.readings.front().bearing_rad, 0.0);
+  EXPECT_LT(profile.readings.back().bearing_rad, 0.0);
+}
+
+// A straight obstacle base across the view, 0.3 m ahead: each column reads
+// 0.3 / cos(bearing), to within the half pixel a binary mask can resolve.
+TEST(ProfileExtractorTest, StraightEdgeGivesTheAnalyticRanges) {
+  const camera::CameraModel camera = PaperCamera();
+  const camera::InversePerspectiveMap ipm(camera);
+  constexpr double kAhead = 0.3;
+  cv::Mat1b mask(240, 320, uchar{0});
+  for (int v = 0; v < 240; ++v) {
+    for (int u = 0; u < 320; ++u) {
+      const std::optional<Eigen::Vector2f> p = ipm.At(u, v);
+      if (p && p->x() < kAhead) mask(v, u) = 255;
+    }
+  }
+  const double half_pixel = 0.5 * camera::RangeErrorAt(camera, kAhead)->worst_m();
+  const core::ObstacleProfile profile = ExtractProfile(mask, ipm, 0.5);
+  for (std::size_t u = 0; u < profile.readings.size(); ++u) {
+    const core::RangeReading& r = profile.readings[u];
+    ASSERT_EQ(r.kind, core::ReadingKind::kHit) << u;
+    // Off-centre columns see the floor obliquely: allow twice the centre's half pixel.
+    EXPECT_NEAR(r.range_m, kAhead / std::cos(r.bearing_rad), 2.0 * half_pixel) << u;
+  }
+  EXPECT_NEAR(profile.readings[160].range_m, kAhead, half_pixel);
+}
+
+TEST(ProfileExtractorTest, NoFloorIsBlindAndAllFloorIsClear) {
+  const camera::CameraModel camera = PaperCamera();
+  const camera::InversePerspectiveMap ipm(camera);
+  const core::ObstacleProfile blind = ExtractProfile(cv::Mat1b(240, 320, uchar{0}), ipm, 0.4);
+  for (int u = 0; u < 320; ++u) {
+    const core::RangeReading& r = blind.readings[static_cast<std::size_t>(u)];
+    EXPECT_EQ(r.kind, core::ReadingKind::kBlind);
+    EXPECT_NEAR(r.range_m, ipm.At(u, 239)->norm(), 1e-6);
+  }
+  const core::ObstacleProfile clear = ExtractProfile(cv::Mat1b(240, 320, uchar{255}), ipm, 0.4);
+  for (const core::RangeReading& r : clear.readings) {
+    EXPECT_EQ(r.kind, core::ReadingKind::kClear);
+    EXPECT_EQ(r.range_m, 0.4);
+  }
+  // Floor reaching past the maximum range with an edge beyond it is clear too.
+  cv::Mat1b far(240, 320, uchar{0});
+  far.rowRange(40, 240).setTo(255);
+  for (const core::RangeReading& r : ExtractProfile(far, ipm, 0.4).readings) {
+    EXPECT_EQ(r.kind, core::ReadingKind::kClear);
+  }
+}
+
+TEST(ProfileExtractorTest, BottomRowsLeftOutAreNotBlind) {
+  const camera::CameraModel camera = PaperCamera();
+  const camera::InversePerspectiveMap ipm(camera);
+  cv::Mat1b mask(240, 320, uchar{0});
+  mask.rowRange(151, 238).setTo(255);  // the last two rows are not floor
+  for (const core::RangeReading& r : ExtractProfile(mask, ipm, 10.0).readings) {
+    EXPECT_EQ(r.kind, core::ReadingKind::kHit);
+  }
+}
+
+}  // namespace
+}  // namespace pirouette::vision

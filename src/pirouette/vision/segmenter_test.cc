@@ -1,0 +1,175 @@
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "pirouette/sim/renderer.h"
+#include "pirouette/vision/appearance_segmenter.h"
+#include "pirouette/vision/edge_map.h"
+#include "pirouette/vision/floor_segmenter.h"
+#include "pirouette/vision/paper_segmenter.h"
+#include "pirouette/vision/test_camera.h"
+
+namespace pirouette::vision {
+namespace {
+
+constexpr int kWallBottom = 40;  // rows [0, 40): a wall; below it the floor
+constexpr int kBoxTop = 25;
+constexpr int kBoxBase = 70;  // the box stands on the floor: its base is row 70
+constexpr int kBoxLeft = 50;
+constexpr int kBoxRight = 110;
+
+// A 160×120 picture: a light wall, a grey floor with fine noise, and a red box
+// standing on the floor in the middle.
+cv::Mat3b FloorWithBox() {
+  cv::Mat3b image(120, 160, cv::Vec3b(90, 95, 100));
+  cv::Mat noise(image.size(), CV_16SC3);
+  cv::RNG rng(7);
+  rng.fill(noise, cv::RNG::NORMAL, 0, 3);
+  cv::Mat3s shifted;
+  image.convertTo(shifted, CV_16SC3);
+  shifted += noise;
+  shifted.convertTo(image, CV_8UC3);
+  image(cv::Rect(0, 0, 160, kWallBottom)).setTo(cv::Vec3b(220, 225, 230));
+  image(cv::Rect(kBoxLeft, kBoxTop, kBoxRight - kBoxLeft, kBoxBase - kBoxTop))
+      .setTo(cv::Vec3b(40, 40, 190));
+  return image;
+}
+
+// The first row, going up column u from the bottom, that is not floor; -1 if all are.
+int BoundaryRow(const cv::Mat1b& mask, int u) {
+  for (int v = mask.rows - 1; v >= 0; --v) {
+    if (mask(v, u) == 0) return v;
+  }
+  return -1;
+}
+
+class SegmenterMethodTest : public testing::TestWithParam<SegmentationMethod> {};
+
+TEST_P(SegmenterMethodTest, FloodFillStopsAtTheBoxBase) {
+  auto segmenter = MakeFloorSegmenter(GetParam(), std::nullopt);
+  const cv::Mat3b image = FloorWithBox();
+  const cv::Mat1b mask = segmenter->Segment(image);
+  ASSERT_EQ(mask.size(), image.size());
+  for (int u = kBoxLeft + 3; u < kBoxRight - 3; u += 4) {
+    EXPECT_NEAR(BoundaryRow(mask, u), kBoxBase - 1, 2) << "column " << u;
+  }
+  for (int u = 5; u < kBoxLeft - 3; u += 4) {
+    EXPECT_NEAR(BoundaryRow(mask, u), kWallBottom - 1, 2) << "column " << u;
+  }
+  EXPECT_EQ(mask(50, 80), 0);  // the box
+  EXPECT_EQ(mask(10, 80), 0);  // the wall
+  EXPECT_EQ(mask(100, 80), 255);
+}
+
+TEST_P(SegmenterMethodTest, IsDeterministic) {
+  const cv::Mat3b image = FloorWithBox();
+  auto a = MakeFloorSegmenter(GetParam(), std::nullopt);
+  auto b = MakeFloorSegmenter(GetParam(), std::nullopt);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(cv::countNonZero(a->Segment(image) != b->Segment(image)), 0);
+  }
+}
+
+TEST_P(SegmenterMethodTest, SearchesTheBottomRowsWhenAnObstacleIsInFront) {
+  auto segmenter = MakeFloorSegmenter(GetParam(), std::nullopt);
+  segmenter->Segment(FloorWithBox());  // learns the floor
+  cv::Mat3b blocked = FloorWithBox();
+  blocked(cv::Rect(60, 85, 40, 35)).setTo(cv::Vec3b(180, 60, 30));  // blue, at the bottom centre
+  const cv::Mat1b mask = segmenter->Segment(blocked);
+  EXPECT_EQ(mask(110, 80), 0);
+  // The paper's fill grows from one seed, found on one side of the obstacle.
+  EXPECT_TRUE(mask(110, 20) == 255 || mask(110, 140) == 255);
+  EXPECT_EQ(mask(110, 20), mask(100, 20));
+}
+
+// A frame of the paper's camera with a box 0.3 m ahead, yawed so its base
+// crosses the image at a slant; the floor's boundary found in each column
+// the box's front face covers lies on the projection of the face's base.
+TEST_P(SegmenterMethodTest, RenderedBoxBaseWithThePaperCamera) {
+  const camera::CameraModel camera = PaperCamera();
+  const Eigen::Vector2d robot_xy(2.0, 2.0);
+  const double yaw = core::DegToRad(15.0);
+  const Eigen::Vector2d box_centre = robot_xy + Eigen::Vector2d(0.30, 0.0);
+  sim::Floor floor{Eigen::Vector2d(4.0, 4.0), core::Rgb{110, 100, 90}, 0.03};
+  sim::RobotSpec robot{core::Pose2(robot_xy.x(), robot_xy.y(), 0.0), 0.04, camera, {}};
+  const sim::World world(
+      "box", floor, sim::BoundaryWalls{0.1, 0.02, core::Rgb{230, 230, 230}},
+      {sim::MakeBox(box_centre, Eigen::Vector2d(0.10, 0.30), yaw, 0.08, core::Rgb{200, 40, 40})},
+      sim::Light{}, robot);
+  sim::Renderer renderer(world, camera, sim::RenderOptions{});
+  const core::Pose2 world_T_robot(robot_xy.x(), robot_xy.y(), 0.0);
+  const core::ImageRgb8 rgb = renderer.Render(world_T_robot);
+  cv::Mat3b bgr(rgb.height(), rgb.width());
+  for (int v = 0; v < rgb.height(); ++v) {
+    for (int u = 0; u < rgb.width(); ++u) {
+      const core::Rgb p = rgb.At(u, v);
+      bgr(v, u) = cv::Vec3b(p.b, p.g, p.r);
+    }
+  }
+  auto segmenter = MakeFloorSegmenter(GetParam(), camera);
+  const cv::Mat1b mask = segmenter->Segment(bgr);
+
+  // The base of the front face, densely sampled and projected.
+  const Eigen::Vector2d normal(-std::cos(yaw), -std::sin(yaw));
+  const Eigen::Vector2d along(-std::sin(yaw), std::cos(yaw));
+  const Eigen::Vector2d face_centre = box_centre + 0.05 * normal;
+  const Eigen::Isometry3d camera_T_robot = camera.robot_T_camera().inverse();
+  std::vector<double> base_row(camera.width(), -1.0);
+  for (double s = -0.14; s <= 0.14; s += 0.0005) {
+    const Eigen::Vector2d p_robot = world_T_robot.Inverse() * (face_centre + s * along);
+    const auto pixel =
+        camera.Project(camera_T_robot * Eigen::Vector3d(p_robot.x(), p_robot.y(), 0));
+    if (!pixel) continue;
+    const int u = static_cast<int>(std::lround(pixel->x()));
+    if (u >= 0 && u < camera.width()) base_row[u] = pixel->y();
+  }
+  int checked = 0;
+  int good = 0;
+  for (int u = 0; u < camera.width(); ++u) {
+    if (base_row[u] < 0.0) continue;
+    ++checked;
+    // The last floor pixel lies just below the base.
+    if (std::abs((BoundaryRow(mask, u) + 1) - (base_row[u] + 0.5)) <= 2.0) ++good;
+  }
+  ASSERT_GT(checked, 100);
+  EXPECT_GE(good, checked * 95 / 100) << good << " of " << checked << " columns";
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, SegmenterMethodTest,
+                         testing::Values(SegmentationMethod::kPaper, SegmentationMethod::kDefault),
+                         [](const testing::TestParamInfo<SegmentationMethod>& info) {
+                           return std::string(SegmentationMethodName(info.param));
+                         });
+
+TEST(FloorSegmenterTest, ParsesMethodNames) {
+  EXPECT_EQ(ParseSegmentationMethod("paper"), SegmentationMethod::kPaper);
+  EXPECT_EQ(ParseSegmentationMethod("default"), SegmentationMethod::kDefault);
+  EXPECT_EQ(ParseSegmentationMethod("Paper"), std::nullopt);
+  EXPECT_EQ(SegmentationMethodName(SegmentationMethod::kPaper), "paper");
+}
+
+TEST(FloorSegmenterTest, ReferenceRegionIsATrapezoidAtTheBottomCentre) {
+  const cv::Mat1b mask = ReferenceRegionMask(cv::Size(100, 100), ReferenceRegion{0.2, 0.6, 0.2, 2});
+  EXPECT_EQ(mask(97, 50), 255);
+  EXPECT_EQ(mask(98, 50), 0);  // the margin
+  EXPECT_EQ(mask(97, 25), 255);
+  EXPECT_EQ(mask(78, 25), 0);  // narrower at its top
+  EXPECT_EQ(mask(78, 50), 255);
+  EXPECT_EQ(mask(70, 50), 0);
+}
+
+TEST(EdgeMapTest, MarksEdgesAlongTheWorldVerticalOnly) {
+  cv::Mat3b grey(60, 60, cv::Vec3b(50, 50, 50));
+  grey(cv::Rect(30, 0, 30, 30)).setTo(cv::Vec3b(200, 200, 200));  // a vertical step, top half
+  grey(cv::Rect(0, 45, 60, 15)).setTo(cv::Vec3b(200, 200, 200));  // a horizontal step, bottom
+  const EdgeMap map = FindEdges(grey, VerticalDirectionField(60, 60), EdgeMapOptions{});
+  EXPECT_GT(cv::countNonZero(map.edges(cv::Rect(25, 5, 10, 15))), 10);
+  EXPECT_EQ(
+      cv::countNonZero(map.edges(cv::Rect(25, 5, 10, 15)) != map.vertical(cv::Rect(25, 5, 10, 15))),
+      0);
+  EXPECT_GT(cv::countNonZero(map.edges(cv::Rect(5, 40, 15, 10))), 10);
+  EXPECT_EQ(cv::countNonZero(map.vertical(cv::Rect(5, 40, 15, 10))), 0);
+}
+
+}  // namespace
+}  // namespace pirouette::vision

@@ -1,0 +1,36 @@
+#include "pirouette/vision/vertical_direction_field.h"
+
+#include <cmath>
+
+namespace pirouette::vision {
+
+VerticalDirectionField::VerticalDirectionField(const camera::CameraModel& camera)
+    : direction_(camera.height(), camera.width()) {
+  const Eigen::Isometry3d robot_T_camera = camera.robot_T_camera();
+  const Eigen::Isometry3d camera_T_robot = robot_T_camera.inverse();
+  constexpr double kHalfStep = 0.001;  // metres along the vertical line
+  for (int v = 0; v < camera.height(); ++v) {
+    for (int u = 0; u < camera.width(); ++u) {
+      const Eigen::Vector3d ray_camera = camera.Backproject(Eigen::Vector2d(u, v));
+      const Eigen::Vector3d p_robot = robot_T_camera * ray_camera;  // 1 m from the optical centre
+      const auto below =
+          camera.Project(camera_T_robot * (p_robot - kHalfStep * Eigen::Vector3d::UnitZ()));
+      const auto above =
+          camera.Project(camera_T_robot * (p_robot + kHalfStep * Eigen::Vector3d::UnitZ()));
+      cv::Vec2f up(0.0f, -1.0f);
+      if (below && above) {
+        const Eigen::Vector2d d = *above - *below;
+        if (d.norm() > 1e-9) {
+          const Eigen::Vector2d unit = d.normalized();
+          up = cv::Vec2f(static_cast<float>(unit.x()), static_cast<float>(unit.y()));
+        }
+      }
+      direction_(v, u) = up;
+    }
+  }
+}
+
+VerticalDirectionField::VerticalDirectionField(int width, int height)
+    : direction_(height, width, cv::Vec2f(0.0f, -1.0f)) {}
+
+}  // namespace pirouette::vision

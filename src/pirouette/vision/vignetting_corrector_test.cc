@@ -1,0 +1,83 @@
+#include "pirouette/vision/vignetting_corrector.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "pirouette/sim/renderer.h"
+#include "pirouette/vision/test_camera.h"
+
+namespace pirouette::vision {
+namespace {
+
+// A floor far larger than the view, one colour, no texture, no walls: every
+// pixel of the frame sees the same flat floor under the same light.
+cv::Mat3b RenderUniformFloor(const camera::CameraModel& camera) {
+  sim::Floor floor{Eigen::Vector2d(40.0, 40.0), core::Rgb{150, 140, 120}, 0.0};
+  sim::RobotSpec robot{core::Pose2(20.0, 20.0, 0.0), 0.04, camera, {}};
+  const sim::World world("uniform", floor, std::nullopt, {}, sim::Light{}, robot);
+  sim::RenderOptions options;
+  options.noise_sigma = 0.0;
+  sim::Renderer renderer(world, camera, options);
+  const core::ImageRgb8 image = renderer.Render(core::Pose2(20.0, 20.0, 0.0));
+  cv::Mat3b bgr(image.height(), image.width());
+  for (int v = 0; v < image.height(); ++v) {
+    for (int u = 0; u < image.width(); ++u) {
+      const core::Rgb p = image.At(u, v);
+      bgr(v, u) = cv::Vec3b(p.b, p.g, p.r);
+    }
+  }
+  return bgr;
+}
+
+double ChannelSpread(const cv::Mat3b& image, int channel) {
+  double lo = 255.0;
+  double hi = 0.0;
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      lo = std::min<double>(lo, image(v, u)[channel]);
+      hi = std::max<double>(hi, image(v, u)[channel]);
+    }
+  }
+  return hi - lo;
+}
+
+TEST(VignettingCorrectorTest, FlattensARenderedUniformFloor) {
+  const camera::CameraModel camera = PaperCamera();
+  const cv::Mat3b raw = RenderUniformFloor(camera);
+  const VignettingCorrector corrector(camera);
+  const cv::Mat3b corrected = corrector.Apply(raw);
+  for (int c = 0; c < 3; ++c) {
+    SCOPED_TRACE(c);
+    EXPECT_GT(ChannelSpread(raw, c), 20.0);       // the corners are visibly darker
+    EXPECT_LE(ChannelSpread(corrected, c), 3.0);  // flat to rounding
+  }
+  // The corrected centre keeps its colour: the gain there is 1.
+  const cv::Vec3b& centre = corrected(120, 160);
+  const cv::Vec3b& raw_centre = raw(120, 160);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], raw_centre[c], 1);
+}
+
+TEST(VignettingCorrectorTest, FactorIsTheInverseOfTheCameraGainPerChannel) {
+  const camera::CameraModel camera = PaperCamera();
+  const VignettingCorrector corrector(camera);
+  // OpenCV's channel 0 is blue, the camera's channel 2.
+  for (const auto& [u, v] : {std::pair{0, 0}, std::pair{319, 239}, std::pair{100, 50}}) {
+    for (int c = 0; c < 3; ++c) {
+      const double expected = 1.0 / camera.VignettingGain(2 - c, Eigen::Vector2d(u, v));
+      EXPECT_NEAR(corrector.Factor(u, v, c), expected, 1e-3);
+    }
+  }
+  EXPECT_NEAR(corrector.Factor(0, 0, 0), 1.40, 1e-3);  // blue, k = 0.40, at the far corner
+}
+
+TEST(VignettingCorrectorTest, SaturatesInsteadOfWrapping) {
+  const camera::CameraModel camera = PaperCamera();
+  const VignettingCorrector corrector(camera);
+  const cv::Mat3b white(240, 320, cv::Vec3b(255, 255, 255));
+  const cv::Mat3b out = corrector.Apply(white);
+  EXPECT_EQ(out(0, 0), cv::Vec3b(255, 255, 255));
+}
+
+}  // namespace
+}  // namespace pirouette::vision

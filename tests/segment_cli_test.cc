@@ -1,0 +1,143 @@
+// `pirouette segment` and `pirouette segment-eval` as a user meets them: the
+// mask, the overlay, the profile JSON, and exit code 2 with a message naming
+// the file for bad input (SPEC.md, "Commands").
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string stdout_only;
+  std::string stderr_only;
+};
+
+Result RunPirouette(const std::string& args) {
+  const fs::path err =
+      fs::temp_directory_path() / ("pirouette_segment_cli_err_" + std::to_string(::getpid()));
+  const std::string command = std::string(PIROUETTE_BINARY) + " " + args + " 2>" + err.string();
+  Result result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  std::array<char, 4096> buffer{};
+  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) {
+    result.stdout_only.append(buffer.data(), n);
+  }
+  const int status = ::pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(err);
+  result.stderr_only = std::string(std::istreambuf_iterator<char>(in), {});
+  fs::remove(err);
+  return result;
+}
+
+std::size_t Count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+class SegmentCliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pirouette_segment_cli_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  static std::string World(const std::string& name) {
+    return std::string(PIROUETTE_WORLDS_DIR) + "/" + name;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(SegmentCliTest, RenderedFrameGivesMaskOverlayAndProfile) {
+  const std::string frame = Path("frame.png");
+  ASSERT_EQ(RunPirouette("render --world " + World("soccer_field.yaml") +
+                         " --pose 0.4,0.4,45 --out " + frame)
+                .exit_code,
+            0);
+  for (const std::string method : {"paper", "default"}) {
+    SCOPED_TRACE(method);
+    std::string args = "segment --image " + frame;
+    args += " --camera " + World("yujin.yaml");
+    args += " --method " + method;
+    args += " --mask " + Path("mask.png");
+    args += " --out " + Path("overlay.png");
+    const Result r = RunPirouette(args);
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
+    EXPECT_NE(r.stdout_only.find("\"max_range_m\""), std::string::npos);
+    EXPECT_EQ(Count(r.stdout_only, "\"bearing_deg\""), 320u);  // one reading per column
+    const cv::Mat mask = cv::imread(Path("mask.png"), cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(mask.type(), CV_8UC1);
+    EXPECT_EQ(mask.cols, 320);
+    EXPECT_EQ(mask.rows, 240);
+    EXPECT_EQ(cv::countNonZero((mask != 0) & (mask != 255)), 0);
+    EXPECT_GT(cv::countNonZero(mask), 320 * 240 / 10);
+    EXPECT_EQ(cv::imread(Path("overlay.png")).size(), cv::Size(320, 240));
+  }
+}
+
+TEST_F(SegmentCliTest, WithoutACameraPrintsNothing) {
+  cv::Mat3b photo(120, 160, cv::Vec3b(90, 100, 110));
+  cv::imwrite(Path("photo.png"), photo);
+  const Result r =
+      RunPirouette("segment --image " + Path("photo.png") + " --mask " + Path("mask.png"));
+  EXPECT_EQ(r.exit_code, 0) << r.stderr_only;
+  EXPECT_EQ(r.stdout_only, "");
+  EXPECT_EQ(cv::imread(Path("mask.png"), cv::IMREAD_UNCHANGED).size(), cv::Size(160, 120));
+}
+
+TEST_F(SegmentCliTest, MissingImageIsBadInput) {
+  const Result r = RunPirouette("segment --image " + Path("nothing.png"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_only.find("nothing.png"), std::string::npos) << r.stderr_only;
+}
+
+TEST_F(SegmentCliTest, EmptyFileIsBadInput) {
+  std::ofstream(Path("empty.png")).flush();
+  const Result r = RunPirouette("segment --image " + Path("empty.png"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_only.find("empty.png"), std::string::npos) << r.stderr_only;
+}
+
+TEST_F(SegmentCliTest, ImageOfAnotherSizeThanTheCameraIsBadInput) {
+  cv::imwrite(Path("small.png"), cv::Mat3b(120, 160, cv::Vec3b(90, 100, 110)));
+  const Result r =
+      RunPirouette("segment --image " + Path("small.png") + " --camera " + World("yujin.yaml"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_only.find("small.png"), std::string::npos) << r.stderr_only;
+  EXPECT_NE(r.stderr_only.find("320"), std::string::npos) << r.stderr_only;
+}
+
+TEST_F(SegmentCliTest, UnknownMethodIsBadInput) {
+  cv::imwrite(Path("photo.png"), cv::Mat3b(120, 160, cv::Vec3b(90, 100, 110)));
+  const Result r = RunPirouette("segment --image " + Path("photo.png") + " --method magic");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_only.find("magic"), std::string::npos) << r.stderr_only;
+}
+
+TEST_F(SegmentCliTest, EvalOfAFolderWithoutPhotosIsBadInput) {
+  const Result r = RunPirouette("segment-eval --images " + dir_.string() + " --last 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.stderr_only.find("source_0.bmp"), std::string::npos) << r.stderr_only;
+}
+
+}  // namespace
