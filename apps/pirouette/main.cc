@@ -20,12 +20,8 @@ int main(int argc, char** argv) {
   app.failure_message(CLI::FailureMessage::help);
 
   const std::vector<Command> commands = {
-      AddRenderCommand(app),
-      AddIpmReportCommand(app),
-      AddRopCommand(app),
-      AddPerceptionEvalCommand(app),
-      AddSegmentCommand(app),
-      AddSegmentEvalCommand(app),
+      AddRenderCommand(app),         AddIpmReportCommand(app), AddRopCommand(app),
+      AddPerceptionEvalCommand(app), AddSegmentCommand(app),   AddSegmentEvalCommand(app),
   };
 
   try {
