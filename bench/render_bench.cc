@@ -15,12 +15,11 @@
 
 #include <chrono>
 #include <cmath>
-#include <string>
 
+#include "bench_worlds.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/sim/ray_caster.h"
 #include "pirouette/sim/renderer.h"
-#include "pirouette/sim/world_file.h"
 
 namespace {
 
@@ -28,23 +27,8 @@ using pirouette::camera::CameraModel;
 using pirouette::core::Pose2;
 using pirouette::sim::World;
 
-const World& SoccerField() {
-  static const World world =
-      pirouette::sim::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
-  return world;
-}
-
-// The paper's camera scaled to another resolution (same field of view).
-CameraModel Scaled(const CameraModel& camera, int width, int height) {
-  const double s = static_cast<double>(width) / camera.width();
-  auto k = camera.intrinsics();
-  k.fx *= s;
-  k.fy *= s;
-  k.cx = (k.cx + 0.5) * s - 0.5;
-  k.cy = (k.cy + 0.5) * s - 0.5;
-  return {camera.name(),      width, height, k, camera.distortion(), camera.mount(),
-          camera.vignetting()};
-}
+using pirouette::bench::Scaled;
+using pirouette::bench::SoccerField;
 
 // Frames per wall-clock second since `start`.
 void SetFramesPerSecond(benchmark::State& state, std::chrono::steady_clock::time_point start) {
