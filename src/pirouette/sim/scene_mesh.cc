@@ -3,14 +3,14 @@
 #include <array>
 #include <cmath>
 
+#include "pirouette/core/geometry2.h"
+
 namespace pirouette::sim {
 namespace {
 
-constexpr double kOutsideExtent = 60.0;  // metres of ground drawn around the floor
+using core::Cross;
 
-double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+constexpr double kOutsideExtent = 60.0;  // metres of ground drawn around the floor
 
 bool InTriangle(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                 const Eigen::Vector2d& c) {

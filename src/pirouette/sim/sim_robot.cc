@@ -6,8 +6,12 @@
 #include <numbers>
 #include <utility>
 
+#include "pirouette/core/geometry2.h"
+
 namespace pirouette::sim {
 namespace {
+
+using core::DistanceToSegment;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -79,15 +83,6 @@ Interval LineInCapsule(const Eigen::Vector2d& origin, const Eigen::Vector2d& u,
                     Slab(offset.dot(normal), u.dot(normal), -rho, rho)));
   }
   return result;
-}
-
-double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length_squared = ab.squaredNorm();
-  const double s =
-      length_squared > 0.0 ? std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
-  return (a + s * ab - p).norm();
 }
 
 // What the robot's disc must not overlap, cut into convex pieces: for each

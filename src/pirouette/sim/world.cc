@@ -8,14 +8,15 @@
 #include <stdexcept>
 #include <utility>
 
+#include "pirouette/core/geometry2.h"
+
 namespace pirouette::sim {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+using core::Cross;
+using core::DistanceToSegment;
 
-double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Twice the signed area of the polygon: positive when counter-clockwise.
 double TwiceSignedArea(const std::vector<Eigen::Vector2d>& polygon) {
@@ -24,15 +25,6 @@ double TwiceSignedArea(const std::vector<Eigen::Vector2d>& polygon) {
     sum += Cross(polygon[i], polygon[(i + 1) % polygon.size()]);
   }
   return sum;
-}
-
-double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length_squared = ab.squaredNorm();
-  const double s =
-      length_squared > 0.0 ? std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
-  return (a + s * ab - p).norm();
 }
 
 // Even-odd (crossing number) test; for a simple polygon it equals the

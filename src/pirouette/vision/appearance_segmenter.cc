@@ -63,14 +63,7 @@ void AppearanceSegmenter::LearnTexture(const cv::Mat1b& bins, const cv::Mat1b& r
 }
 
 cv::Mat1b AppearanceSegmenter::Segment(const cv::Mat3b& bgr_raw) {
-  CV_Assert(!bgr_raw.empty());
-  if (corrector_) {
-    CV_Assert(bgr_raw.cols == corrector_->width() && bgr_raw.rows == corrector_->height());
-  } else if (!vertical_ || vertical_->width() != bgr_raw.cols ||
-             vertical_->height() != bgr_raw.rows) {
-    vertical_.emplace(bgr_raw.cols, bgr_raw.rows);
-  }
-  const cv::Mat3b corrected = corrector_ ? corrector_->Apply(bgr_raw) : bgr_raw;
+  const cv::Mat3b corrected = PrepareFrame(bgr_raw, corrector_, vertical_, 0.0);
   cv::Mat3b blurred;
   if (options_.blur_sigma > 0.0) {
     cv::GaussianBlur(corrected, blurred, cv::Size(), options_.blur_sigma);

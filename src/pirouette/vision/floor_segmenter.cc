@@ -53,4 +53,20 @@ cv::Mat1b ReferenceRegionMask(cv::Size size, const ReferenceRegion& region) {
   return mask;
 }
 
+cv::Mat3b PrepareFrame(const cv::Mat3b& bgr_raw,
+                       const std::optional<VignettingCorrector>& corrector,
+                       std::optional<VerticalDirectionField>& vertical, double blur_sigma) {
+  CV_Assert(!bgr_raw.empty());
+  if (corrector) {
+    CV_Assert(bgr_raw.cols == corrector->width() && bgr_raw.rows == corrector->height());
+  } else if (!vertical || vertical->width() != bgr_raw.cols || vertical->height() != bgr_raw.rows) {
+    vertical.emplace(bgr_raw.cols, bgr_raw.rows);
+  }
+  const cv::Mat3b corrected = corrector ? corrector->Apply(bgr_raw) : bgr_raw;
+  if (blur_sigma <= 0.0) return corrected;
+  cv::Mat3b blurred;
+  cv::GaussianBlur(corrected, blurred, cv::Size(), blur_sigma);
+  return blurred;
+}
+
 }  // namespace pirouette::vision

@@ -6,6 +6,8 @@
 #include <string_view>
 
 #include "pirouette/camera/camera_model.h"
+#include "pirouette/vision/vertical_direction_field.h"
+#include "pirouette/vision/vignetting_corrector.h"
 
 namespace pirouette::vision {
 
@@ -47,6 +49,15 @@ struct ReferenceRegion {
   double top_width = 0.3;     // of the image's width, at the region's top row
   int margin = 2;             // rows left out at the very bottom (lens and sensor border)
 };
+
+// The first steps every segmenter takes on a raw frame. With a corrector (a
+// known camera) the frame must have the camera's size and is corrected for
+// vignetting; without one, `vertical` is (re)built as "up the image" for the
+// frame's size. Then a Gaussian low-pass of `blur_sigma` pixels (none when
+// <= 0). Returns the corrected, low-passed frame.
+cv::Mat3b PrepareFrame(const cv::Mat3b& bgr_raw,
+                       const std::optional<VignettingCorrector>& corrector,
+                       std::optional<VerticalDirectionField>& vertical, double blur_sigma);
 
 // The reference region's mask (255 inside) for an image of `size`.
 cv::Mat1b ReferenceRegionMask(cv::Size size, const ReferenceRegion& region);

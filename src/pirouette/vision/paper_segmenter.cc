@@ -16,20 +16,7 @@ PaperSegmenter::PaperSegmenter(const std::optional<camera::CameraModel>& camera,
 }
 
 cv::Mat1b PaperSegmenter::Segment(const cv::Mat3b& bgr_raw) {
-  CV_Assert(!bgr_raw.empty());
-  if (corrector_) {
-    CV_Assert(bgr_raw.cols == corrector_->width() && bgr_raw.rows == corrector_->height());
-  } else if (!vertical_ || vertical_->width() != bgr_raw.cols ||
-             vertical_->height() != bgr_raw.rows) {
-    vertical_.emplace(bgr_raw.cols, bgr_raw.rows);
-  }
-  const cv::Mat3b corrected = corrector_ ? corrector_->Apply(bgr_raw) : bgr_raw;
-  cv::Mat3b blurred;
-  if (options_.blur_sigma > 0.0) {
-    cv::GaussianBlur(corrected, blurred, cv::Size(), options_.blur_sigma);
-  } else {
-    blurred = corrected;
-  }
+  const cv::Mat3b blurred = PrepareFrame(bgr_raw, corrector_, vertical_, options_.blur_sigma);
   last_edges_ = FindEdges(blurred, *vertical_, options_.edges);
 
   // The barrier: the edges that are not vertical in the world.
