@@ -2,44 +2,22 @@
 // line and field, and the files it writes (SPEC.md, "Commands").
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
-#include <cstdio>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "run_pirouette.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string output;  // standard output and standard error together
-  std::string stdout_only;
-};
-
-// Runs pirouette with `args` (already shell-quoted where needed).
-Result RunPirouette(const std::string& args) {
-  const fs::path err =
-      fs::temp_directory_path() / ("pirouette_cli_err_" + std::to_string(::getpid()));
-  const std::string command = std::string(PIROUETTE_BINARY) + " " + args + " 2>" + err.string();
-  Result result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) {
-    result.stdout_only.append(buffer.data(), n);
-  }
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  result.output = result.stdout_only + std::string(std::istreambuf_iterator<char>(in), {});
-  fs::remove(err);
-  return result;
-}
+using pirouette::testing::RunPirouette;
+using Result = pirouette::testing::RunResult;
 
 class CliTest : public ::testing::Test {
  protected:
@@ -66,17 +44,17 @@ const std::string kWorlds = PIROUETTE_WORLDS_DIR;
 TEST_F(CliTest, HelpTeachesAndExitsZero) {
   const Result r = RunPirouette("--help");
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_NE(r.output.find("render"), std::string::npos);
+  EXPECT_NE(r.output().find("render"), std::string::npos);
   const Result sub = RunPirouette("render --help");
   EXPECT_EQ(sub.exit_code, 0);
-  EXPECT_NE(sub.output.find("--pose"), std::string::npos);
+  EXPECT_NE(sub.output().find("--pose"), std::string::npos);
 }
 
 TEST_F(CliTest, RenderWritesTheCamerasImage) {
   const fs::path out = dir_ / "view.png";
   const Result r = RunPirouette("render --world " + kWorlds +
                                 "/soccer_field.yaml --pose 0.2,0.2,45 --out " + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_EQ(r.exit_code, 0) << r.output();
   EXPECT_TRUE(r.stdout_only.empty()) << "render prints nothing on standard output";
   const cv::Mat image = cv::imread(out.string(), cv::IMREAD_COLOR);
   ASSERT_FALSE(image.empty());
@@ -108,12 +86,12 @@ TEST_F(CliTest, BadUsageExitsTwo) {
       RunPirouette("render --world " + kWorlds + "/soccer_field.yaml --pose 1,2 --out " +
                    (dir_ / "x.png").string());
   EXPECT_EQ(pose.exit_code, 2);
-  EXPECT_NE(pose.output.find("--pose"), std::string::npos) << pose.output;
+  EXPECT_NE(pose.output().find("--pose"), std::string::npos) << pose.output();
   const Result off =
       RunPirouette("render --world " + kWorlds + "/soccer_field.yaml --pose 5,5,0 --out " +
                    (dir_ / "x.png").string());
   EXPECT_EQ(off.exit_code, 2);
-  EXPECT_NE(off.output.find("off the floor"), std::string::npos) << off.output;
+  EXPECT_NE(off.output().find("off the floor"), std::string::npos) << off.output();
   EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }
 
@@ -187,10 +165,10 @@ TEST_F(CliTest, EveryKindOfBadWorldExitsTwoNamingFileLineAndField) {
     const std::string world = Write("bad.yaml", yaml);
     const Result r = RunPirouette("render --world " + world + " --pose 0.5,0.5,0 --out " +
                                   (dir_ / "x.png").string());
-    EXPECT_EQ(r.exit_code, 2) << bad.what << ": " << r.output;
-    EXPECT_NE(r.output.find(world + ":" + std::to_string(bad.line)), std::string::npos)
-        << bad.what << ": " << r.output;
-    EXPECT_NE(r.output.find(bad.field), std::string::npos) << bad.what << ": " << r.output;
+    EXPECT_EQ(r.exit_code, 2) << bad.what << ": " << r.output();
+    EXPECT_NE(r.output().find(world + ":" + std::to_string(bad.line)), std::string::npos)
+        << bad.what << ": " << r.output();
+    EXPECT_NE(r.output().find(bad.field), std::string::npos) << bad.what << ": " << r.output();
   }
 }
 
@@ -209,22 +187,22 @@ robot: {start: [0.5, 0.5, 0], radius: 0.04, camera: camera.yaml}
 )");
   const Result r = RunPirouette("render --world " + world + " --pose 0.5,0.5,0 --out " +
                                 (dir_ / "x.png").string());
-  EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find(camera + ":6"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("mount.height"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exit_code, 2) << r.output();
+  EXPECT_NE(r.output().find(camera + ":6"), std::string::npos) << r.output();
+  EXPECT_NE(r.output().find("mount.height"), std::string::npos) << r.output();
   const Result missing = RunPirouette("render --world " + (dir_ / "none.yaml").string() +
                                       " --pose 0.5,0.5,0 --out " + (dir_ / "x.png").string());
   EXPECT_EQ(missing.exit_code, 2);
-  EXPECT_NE(missing.output.find("none.yaml"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output().find("none.yaml"), std::string::npos) << missing.output();
 }
 
 TEST_F(CliTest, IpmReportPrintsThePapersFigure) {
   const Result r = RunPirouette("ipm-report --camera " + kWorlds + "/yujin.yaml --json");
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_EQ(r.exit_code, 0) << r.output();
   EXPECT_NE(r.stdout_only.find("\"max_range_m\": 0.4"), std::string::npos) << r.stdout_only;
   const Result bad = RunPirouette("ipm-report --camera " + kWorlds + "/yujin.yaml --cell 0");
-  EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  EXPECT_NE(bad.output.find("--cell"), std::string::npos) << bad.output;
+  EXPECT_EQ(bad.exit_code, 2) << bad.output();
+  EXPECT_NE(bad.output().find("--cell"), std::string::npos) << bad.output();
 }
 
 TEST_F(CliTest, RopWritesThePolarPlot) {
@@ -232,21 +210,21 @@ TEST_F(CliTest, RopWritesThePolarPlot) {
   const Result r =
       RunPirouette("rop --world " + kWorlds +
                    "/soccer_field.yaml --pose 0.75,0.65,0 --method truth --out " + out.string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_EQ(r.exit_code, 0) << r.output();
   EXPECT_TRUE(r.stdout_only.empty());
   const cv::Mat image = cv::imread(out.string());
   EXPECT_FALSE(image.empty());
   const Result bad =
       RunPirouette("rop --world " + kWorlds +
                    "/soccer_field.yaml --pose 0.75,0.65,0 --method magic --out " + out.string());
-  EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  EXPECT_NE(bad.output.find("--method"), std::string::npos) << bad.output;
+  EXPECT_EQ(bad.exit_code, 2) << bad.output();
+  EXPECT_NE(bad.output().find("--method"), std::string::npos) << bad.output();
 }
 
 TEST_F(CliTest, PerceptionEvalRefusesAMissingWorld) {
   const Result r = RunPirouette("perception-eval --world " + (dir_ / "none.yaml").string());
-  EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("none.yaml"), std::string::npos) << r.output;
+  EXPECT_EQ(r.exit_code, 2) << r.output();
+  EXPECT_NE(r.output().find("none.yaml"), std::string::npos) << r.output();
 }
 
 }  // namespace

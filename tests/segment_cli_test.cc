@@ -3,45 +3,22 @@
 // the file for bad input (SPEC.md, "Commands").
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "run_pirouette.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string stdout_only;
-  std::string stderr_only;
-};
-
-Result RunPirouette(const std::string& args) {
-  const fs::path err =
-      fs::temp_directory_path() / ("pirouette_segment_cli_err_" + std::to_string(::getpid()));
-  const std::string command = std::string(PIROUETTE_BINARY) + " " + args + " 2>" + err.string();
-  Result result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) {
-    result.stdout_only.append(buffer.data(), n);
-  }
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err);
-  result.stderr_only = std::string(std::istreambuf_iterator<char>(in), {});
-  fs::remove(err);
-  return result;
-}
+using pirouette::testing::RunPirouette;
+using Result = pirouette::testing::RunResult;
 
 std::size_t Count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
