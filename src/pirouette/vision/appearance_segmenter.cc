@@ -10,6 +10,8 @@ AppearanceSegmenter::AppearanceSegmenter(const std::optional<camera::CameraModel
                                          const AppearanceSegmenterOptions& options)
     : options_(options), colour_(options.colour) {
   CV_Assert(options.blur_sigma >= 0.0 && options.texture_window >= 1 && options.close_size >= 0);
+  CV_Assert(options.bootstrap_frames >= 0 && options.bootstrap_agreement >= 0.0 &&
+            options.bootstrap_agreement <= 1.0);
   if (camera) {
     corrector_.emplace(*camera);
     vertical_.emplace(*camera);
@@ -33,8 +35,9 @@ cv::Mat1b AppearanceSegmenter::TextureBins(const cv::Mat1b& grey) const {
   return bins;
 }
 
-void AppearanceSegmenter::LearnTexture(const cv::Mat1b& bins, const cv::Mat1b& region) {
-  std::array<double, kTextureBins> frame{};
+std::optional<AppearanceSegmenter::TextureHistogram> AppearanceSegmenter::HistogramOf(
+    const cv::Mat1b& bins, const cv::Mat1b& region) {
+  TextureHistogram frame{};
   double count = 0.0;
   for (int v = 0; v < bins.rows; ++v) {
     for (int u = 0; u < bins.cols; ++u) {
@@ -43,10 +46,19 @@ void AppearanceSegmenter::LearnTexture(const cv::Mat1b& bins, const cv::Mat1b& r
       count += 1.0;
     }
   }
-  if (count == 0.0) return;
+  if (count == 0.0) return std::nullopt;
+  for (double& h : frame) h /= count;
+  return frame;
+}
+
+void AppearanceSegmenter::LearnTexture(const cv::Mat1b& bins, const cv::Mat1b& region) {
+  if (const auto frame = HistogramOf(bins, region)) LearnTexture(*frame);
+}
+
+void AppearanceSegmenter::LearnTexture(const TextureHistogram& frame) {
   const double keep = texture_learnt_ ? 1.0 - options_.colour.forgetting : 0.0;
   for (int i = 0; i < kTextureBins; ++i) {
-    texture_histogram_[i] = keep * texture_histogram_[i] + (1.0 - keep) * frame[i] / count;
+    texture_histogram_[i] = keep * texture_histogram_[i] + (1.0 - keep) * frame[i];
   }
   texture_learnt_ = true;
   // Smoothed by [1 2 1] / 4, then over its maximum.
@@ -62,6 +74,69 @@ void AppearanceSegmenter::LearnTexture(const cv::Mat1b& bins, const cv::Mat1b& r
   }
 }
 
+void AppearanceSegmenter::Bootstrap(const cv::Mat3b& blurred, const cv::Mat1b& texture,
+                                    const cv::Mat1b& reference) {
+  if (frames_seen_ >= options_.bootstrap_frames) {
+    samples_.clear();
+    agreement_.clear();
+    return;
+  }
+  ++frames_seen_;
+  ReferenceSample sample{
+      FloorColourModel::Histogram(blurred, reference), {}, FloorColourModel(options_.colour)};
+  const auto texture_histogram = HistogramOf(texture, reference);
+  if (sample.colour.empty() || !texture_histogram) return;
+  sample.texture = *texture_histogram;
+  sample.model.Learn(sample.colour);
+  const auto threshold = static_cast<float>(options_.colour_threshold);
+  const std::size_t n = samples_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool agree = std::min(samples_[i].model.Coverage(sample.colour, threshold),
+                                sample.model.Coverage(samples_[i].colour, threshold)) >=
+                       options_.bootstrap_agreement;
+    agreement_[i].push_back(agree);
+  }
+  samples_.push_back(std::move(sample));
+  agreement_.emplace_back(n + 1, false);
+  for (std::size_t i = 0; i < n; ++i) agreement_[n][i] = agreement_[i][n];
+  agreement_[n][n] = true;
+  if (!colour_.learnt()) return;  // the first region: Segment learns it as before
+
+  // The appearance most regions agree on (the earliest on a tie, so that the
+  // model changes only on a strict majority)...
+  std::size_t best = 0;
+  long best_support = -1;
+  for (std::size_t i = 0; i <= n; ++i) {
+    const long support = std::count(agreement_[i].begin(), agreement_[i].end(), true);
+    if (support > best_support) {
+      best = i;
+      best_support = support;
+    }
+  }
+  // ...replaces the model when the model does not hold it already.
+  if (std::min(colour_.Coverage(samples_[best].colour, threshold),
+               samples_[best].model.Coverage(colour_.histogram(), threshold)) >=
+      options_.bootstrap_agreement) {
+    return;
+  }
+  const auto members = static_cast<double>(best_support);
+  std::vector<double> colour(FloorColourModel::kBins, 0.0);
+  TextureHistogram texture_mean{};
+  for (std::size_t j = 0; j <= n; ++j) {
+    if (!agreement_[best][j]) continue;
+    for (int b = 0; b < FloorColourModel::kBins; ++b) {
+      colour[b] += samples_[j].colour[b] / members;
+    }
+    for (int b = 0; b < kTextureBins; ++b) {
+      texture_mean[b] += samples_[j].texture[b] / members;
+    }
+  }
+  colour_ = FloorColourModel(options_.colour);
+  colour_.Learn(colour);
+  texture_learnt_ = false;
+  LearnTexture(texture_mean);
+}
+
 cv::Mat1b AppearanceSegmenter::Segment(const cv::Mat3b& bgr_raw) {
   const cv::Mat3b corrected = PrepareFrame(bgr_raw, corrector_, vertical_, 0.0);
   cv::Mat3b blurred;
@@ -75,6 +150,7 @@ cv::Mat1b AppearanceSegmenter::Segment(const cv::Mat3b& bgr_raw) {
   const cv::Mat1b texture = TextureBins(grey);
 
   const cv::Mat1b reference = ReferenceRegionMask(bgr_raw.size(), options_.reference);
+  Bootstrap(blurred, texture, reference);
   if (!colour_.learnt()) colour_.Learn(blurred, reference);
   if (!texture_learnt_) LearnTexture(texture, reference);
 

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/vision/edge_map.h"
@@ -43,6 +44,14 @@ struct AppearanceSegmenterOptions {
   // refine_ratio times the rest's.
   int refine_passes = 1;
   double refine_ratio = 0.7;
+  // The first model is chosen by the first pirouette, not the first frame: for
+  // this many frames (12, one pirouette) each reference region's colours are
+  // kept, and when more of them agree on another appearance than on the
+  // model's, the model is learnt afresh from those (see Segment). 0 turns it off.
+  int bootstrap_frames = 12;
+  // Two reference regions agree when each one's colour model calls at least
+  // this share of the other's pixels floor-coloured (at colour_threshold).
+  double bootstrap_agreement = 0.8;
 };
 
 // The default segmenter, after Ulrich & Nourbakhsh (2000), "Appearance-based
@@ -59,7 +68,10 @@ struct AppearanceSegmenterOptions {
 // two-class idea of GrabCut, with histograms and no graph cut), which removes colours the reference
 // region shares with walls. Later frames learn from the part of the reference region found floor,
 // with exponential forgetting, so the model follows the light and an obstacle right in front of the
-// robot is not learnt as floor.
+// robot is not learnt as floor. The first frame alone may be filled by an
+// obstacle (a wall a few cm away), so over the first pirouette the model
+// follows the appearance most reference regions agree on, the majority vote of
+// the paper's assumption that the reference region is floor.
 class AppearanceSegmenter : public FloorSegmenter {
  public:
   AppearanceSegmenter(const std::optional<camera::CameraModel>& camera,
@@ -73,7 +85,22 @@ class AppearanceSegmenter : public FloorSegmenter {
   static constexpr int kTextureBins = 16;
 
   cv::Mat1b TextureBins(const cv::Mat1b& grey) const;
+  using TextureHistogram = std::array<double, kTextureBins>;
+  // The normalised histogram of `bins` in `region`; nullopt when it is empty.
+  static std::optional<TextureHistogram> HistogramOf(const cv::Mat1b& bins,
+                                                     const cv::Mat1b& region);
   void LearnTexture(const cv::Mat1b& bins, const cv::Mat1b& region);
+  void LearnTexture(const TextureHistogram& frame);
+  // Keeps the reference region's appearance during the first pirouette and
+  // relearns the model when most regions so far agree on another appearance.
+  void Bootstrap(const cv::Mat3b& blurred, const cv::Mat1b& texture, const cv::Mat1b& reference);
+
+  // One reference region's appearance, kept while bootstrapping.
+  struct ReferenceSample {
+    std::vector<double> colour;  // FloorColourModel::Histogram
+    TextureHistogram texture{};
+    FloorColourModel model;  // learnt from `colour` alone
+  };
 
   AppearanceSegmenterOptions options_;
   std::optional<VignettingCorrector> corrector_;
@@ -82,6 +109,9 @@ class AppearanceSegmenter : public FloorSegmenter {
   bool texture_learnt_ = false;
   std::array<double, kTextureBins> texture_histogram_{};
   std::array<float, kTextureBins> texture_likelihood_{};
+  int frames_seen_ = 0;
+  std::vector<ReferenceSample> samples_;      // while bootstrapping
+  std::vector<std::vector<bool>> agreement_;  // agreement_[i][j]: samples i and j agree
 };
 
 }  // namespace pirouette::vision

@@ -77,7 +77,7 @@ int FloorColourModel::Bin(const cv::Vec3b& bgr) {
   return BinTable()[((bgr[0] >> 3) << 10) | ((bgr[1] >> 3) << 5) | (bgr[2] >> 3)];
 }
 
-void FloorColourModel::Learn(const cv::Mat3b& bgr, const cv::Mat1b& region) {
+std::vector<double> FloorColourModel::Histogram(const cv::Mat3b& bgr, const cv::Mat1b& region) {
   CV_Assert(bgr.size() == region.size());
   std::vector<double> frame(kBins, 0.0);
   double count = 0.0;
@@ -90,13 +90,34 @@ void FloorColourModel::Learn(const cv::Mat3b& bgr, const cv::Mat1b& region) {
       count += 1.0;
     }
   }
-  if (count == 0.0) return;
+  if (count == 0.0) return {};
+  for (double& h : frame) h /= count;
+  return frame;
+}
+
+void FloorColourModel::Learn(const cv::Mat3b& bgr, const cv::Mat1b& region) {
+  Learn(Histogram(bgr, region));
+}
+
+void FloorColourModel::Learn(const std::vector<double>& histogram) {
+  if (histogram.empty()) return;
+  CV_Assert(histogram.size() == static_cast<std::size_t>(kBins));
   const double keep = learnt_ ? 1.0 - options_.forgetting : 0.0;
   for (int i = 0; i < kBins; ++i) {
-    histogram_[i] = keep * histogram_[i] + (1.0 - keep) * frame[i] / count;
+    histogram_[i] = keep * histogram_[i] + (1.0 - keep) * histogram[i];
   }
   learnt_ = true;
   UpdateLikelihood();
+}
+
+double FloorColourModel::Coverage(const std::vector<double>& histogram, float threshold) const {
+  if (!learnt_ || histogram.empty()) return 0.0;
+  CV_Assert(histogram.size() == static_cast<std::size_t>(kBins));
+  double covered = 0.0;
+  for (int i = 0; i < kBins; ++i) {
+    if (histogram[i] > 0.0 && likelihood_[i] >= threshold) covered += histogram[i];
+  }
+  return covered;
 }
 
 void FloorColourModel::UpdateLikelihood() {

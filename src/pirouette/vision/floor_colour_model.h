@@ -29,10 +29,25 @@ class FloorColourModel {
   explicit FloorColourModel(const FloorColourModelOptions& options = {});
 
   bool learnt() const { return learnt_; }
+  // The normalised histogram learnt (kBins values; all zeros before learning).
+  const std::vector<double>& histogram() const { return histogram_; }
 
   // Learns the colours of `bgr` where `region` is non-zero (same size). A
   // region with no pixel leaves the model as it was.
   void Learn(const cv::Mat3b& bgr, const cv::Mat1b& region);
+
+  // Learns a histogram as Histogram returns it (kBins values summing to 1), as
+  // Learn does the region's; an empty histogram leaves the model as it was.
+  void Learn(const std::vector<double>& histogram);
+
+  // The normalised colour histogram of `bgr` where `region` is non-zero (same
+  // size), kBins values summing to 1; empty when the region has no pixel.
+  static std::vector<double> Histogram(const cv::Mat3b& bgr, const cv::Mat1b& region);
+
+  // The share of a histogram's mass (as Histogram returns it) in bins whose
+  // likelihood is at least `threshold`: how much of a region this model would
+  // call floor-coloured. 0 before anything is learnt.
+  double Coverage(const std::vector<double>& histogram, float threshold) const;
 
   // How floor-like each pixel's colour is, in [0, 1]: the smoothed histogram at
   // its bin over the histogram's maximum. All zeros before anything is learnt.

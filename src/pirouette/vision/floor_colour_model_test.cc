@@ -15,6 +15,26 @@ TEST(FloorColourModelTest, KnowsNothingBeforeLearning) {
   EXPECT_EQ(model.Likelihood(kBeige), 0.0f);
 }
 
+TEST(FloorColourModelTest, CoverageIsTheShareOfARegionCalledFloor) {
+  cv::Mat3b image(20, 20, kBeige);
+  image(cv::Rect(0, 0, 20, 5)).setTo(kRed);  // a quarter red
+  const cv::Mat1b all(20, 20, std::uint8_t{255});
+  const std::vector<double> histogram = FloorColourModel::Histogram(image, all);
+  ASSERT_EQ(histogram.size(), static_cast<std::size_t>(FloorColourModel::kBins));
+  FloorColourModel beige;
+  EXPECT_EQ(beige.Coverage(histogram, 0.1f), 0.0);  // nothing learnt
+  beige.Learn(cv::Mat3b(20, 20, kBeige), all);
+  EXPECT_NEAR(beige.Coverage(histogram, 0.1f), 0.75, 1e-9);
+  // Learning a histogram is learning its region.
+  FloorColourModel from_image;
+  FloorColourModel from_histogram;
+  from_image.Learn(image, all);
+  from_histogram.Learn(histogram);
+  EXPECT_EQ(from_image.Likelihood(kRed), from_histogram.Likelihood(kRed));
+  EXPECT_EQ(from_image.histogram(), from_histogram.histogram());
+  EXPECT_TRUE(FloorColourModel::Histogram(image, cv::Mat1b(20, 20, std::uint8_t{0})).empty());
+}
+
 TEST(FloorColourModelTest, LearntColourIsFloorAndOthersAreNot) {
   FloorColourModel model;
   const cv::Mat3b image(20, 20, kBeige);

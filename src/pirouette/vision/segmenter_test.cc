@@ -158,6 +158,58 @@ TEST(FloorSegmenterTest, ReferenceRegionIsATrapezoidAtTheBottomCentre) {
   EXPECT_EQ(mask(70, 50), 0);
 }
 
+// The first frame of a pirouette started a few cm from a wall: the wall fills
+// it, reference region and all.
+cv::Mat3b WallCloseUp() {
+  cv::Mat3b image(120, 160, cv::Vec3b(220, 225, 230));
+  cv::Mat noise(image.size(), CV_16SC3);
+  cv::RNG rng(11);
+  rng.fill(noise, cv::RNG::NORMAL, 0, 3);
+  cv::Mat3s shifted;
+  image.convertTo(shifted, CV_16SC3);
+  shifted += noise;
+  shifted.convertTo(image, CV_8UC3);
+  return image;
+}
+
+TEST(AppearanceSegmenterTest, AFirstFrameFilledByAWallDoesNotTeachTheWall) {
+  const cv::Vec3b wall(220, 225, 230);
+  const auto floor_seen_after_wall = [&](int bootstrap_frames) {
+    AppearanceSegmenterOptions options;
+    options.bootstrap_frames = bootstrap_frames;
+    AppearanceSegmenter segmenter(std::nullopt, options);
+    segmenter.Segment(WallCloseUp());  // learnt as floor: nothing else is known yet
+    cv::Mat1b mask;
+    for (int frame = 0; frame < 3; ++frame) mask = segmenter.Segment(FloorWithBox());
+    return std::pair{mask, segmenter.colour_model().Likelihood(wall)};
+  };
+  // Learning from the first frame alone keeps the wall as the floor's colour...
+  EXPECT_GE(floor_seen_after_wall(0).second, 0.1f);
+  // ...while the first pirouette's majority (here 3 frames of floor against 1
+  // of wall) replaces it by the floor's.
+  const auto [mask, wall_likelihood] = floor_seen_after_wall(12);
+  EXPECT_LT(wall_likelihood, 0.1f);
+  EXPECT_EQ(mask(10, 80), 0);     // the wall
+  EXPECT_EQ(mask(50, 80), 0);     // the box
+  EXPECT_EQ(mask(110, 80), 255);  // the floor in front
+  for (int u = 5; u < kBoxLeft - 3; u += 4) {
+    EXPECT_NEAR(BoundaryRow(mask, u), kWallBottom - 1, 2) << "column " << u;
+  }
+}
+
+TEST(AppearanceSegmenterTest, AConsistentStartIsLearntAsBefore) {
+  // A pirouette whose reference regions all agree: the bootstrap changes nothing.
+  AppearanceSegmenterOptions off;
+  off.bootstrap_frames = 0;
+  AppearanceSegmenter with(std::nullopt, AppearanceSegmenterOptions{});
+  AppearanceSegmenter without(std::nullopt, off);
+  for (int frame = 0; frame < 4; ++frame) {
+    const cv::Mat1b a = with.Segment(FloorWithBox());
+    const cv::Mat1b b = without.Segment(FloorWithBox());
+    EXPECT_EQ(cv::countNonZero(a != b), 0) << "frame " << frame;
+  }
+}
+
 TEST(EdgeMapTest, MarksEdgesAlongTheWorldVerticalOnly) {
   cv::Mat3b grey(60, 60, cv::Vec3b(50, 50, 50));
   grey(cv::Rect(30, 0, 30, 30)).setTo(cv::Vec3b(200, 200, 200));  // a vertical step, top half
