@@ -84,6 +84,9 @@ class CameraModel {
 
   // The fraction of light passed at `pixel` for channel c (0 R, 1 G, 2 B).
   double VignettingGain(int channel, const Eigen::Vector2d& pixel) const;
+  // r_max² of the vignetting model: the squared distance, in pixels, from the
+  // principal point to the farthest corner pixel's centre.
+  double vignetting_r_max_squared() const { return r_max_squared_; }
 
  private:
   std::string name_;

@@ -412,15 +412,8 @@ struct Renderer::Impl {
     const auto& k = camera.intrinsics();
     glUniform2f(glGetUniformLocation(warp_program, "principal_point"), static_cast<float>(k.cx),
                 static_cast<float>(k.cy));
-    // VignettingGain(c, p) = 1 / (1 + k_c ρ²): recover 1/r_max² from channel 0's model.
-    double r_max_squared = 0.0;
-    for (const double u : {0.0, camera.width() - 1.0}) {
-      for (const double v : {0.0, camera.height() - 1.0}) {
-        r_max_squared = std::max(r_max_squared, (u - k.cx) * (u - k.cx) + (v - k.cy) * (v - k.cy));
-      }
-    }
     glUniform1f(glGetUniformLocation(warp_program, "inv_r_max_squared"),
-                static_cast<float>(1.0 / r_max_squared));
+                static_cast<float>(1.0 / camera.vignetting_r_max_squared()));
     const auto& vk = camera.vignetting().k;
     glUniform3f(glGetUniformLocation(warp_program, "vignetting_k"), static_cast<float>(vk[0]),
                 static_cast<float>(vk[1]), static_cast<float>(vk[2]));
