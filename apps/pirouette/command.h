@@ -27,5 +27,6 @@ Command AddRopCommand(CLI::App& parent);
 Command AddPerceptionEvalCommand(CLI::App& parent);
 Command AddSegmentCommand(CLI::App& parent);
 Command AddSegmentEvalCommand(CLI::App& parent);
+Command AddEvalCommand(CLI::App& parent);
 
 }  // namespace pirouette::cli

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
 
   const std::vector<Command> commands = {
       AddRenderCommand(app),         AddIpmReportCommand(app), AddRopCommand(app),
-      AddPerceptionEvalCommand(app), AddSegmentCommand(app),   AddSegmentEvalCommand(app),
+      AddPerceptionEvalCommand(app), AddSegmentCommand(app),   AddSegmentEvalCommand(app), AddEvalCommand(app),
   };
 
   try {
