@@ -28,5 +28,7 @@ Command AddPerceptionEvalCommand(CLI::App& parent);
 Command AddSegmentCommand(CLI::App& parent);
 Command AddSegmentEvalCommand(CLI::App& parent);
 Command AddEvalCommand(CLI::App& parent);
+Command AddExploreCommand(CLI::App& parent);
+Command AddExploreEvalCommand(CLI::App& parent);
 
 }  // namespace pirouette::cli

@@ -1,11 +1,32 @@
+#include <cstdio>
+#include <memory>
+#include <string>
+
 #include "apps/pirouette/command.h"
+#include "pirouette/app/map_evaluation.h"
+#include "pirouette/app/map_file.h"
+#include "pirouette/sim/world_file.h"
 
 namespace pirouette::cli {
 
-// Placeholder, replaced by the eval work.
 Command AddEvalCommand(CLI::App& parent) {
-  CLI::App* cmd = parent.add_subcommand("eval", "Evaluate a map against a world (not yet).");
-  return {cmd, [] {}};
+  auto world_path = std::make_shared<std::string>();
+  auto map_path = std::make_shared<std::string>();
+  CLI::App* cmd = parent.add_subcommand(
+      "eval",
+      "Judge a map (ROS map_server YAML + image) against a world's ground truth and print, as "
+      "JSON on standard output: coverage (the fraction of the floor the robot can reach that the "
+      "map marks free), false_free, false_occupied (occupied cells more than 2 cells from any "
+      "true obstacle), wall_error_m and the map's cell counts.\n  example: pirouette eval "
+      "--world worlds/soccer_field.yaml --map out/map.yaml");
+  cmd->add_option("--world", *world_path, "world file (pirouette-world/1 YAML)")->required();
+  cmd->add_option("--map", *map_path, "map file (map_server YAML, e.g. out/map.yaml)")->required();
+  return {cmd, [world_path, map_path] {
+            const sim::World world = sim::LoadWorldFile(*world_path);
+            const mapping::TrinaryMap map = app::ReadRosMap(*map_path);
+            const std::string json = app::MapEvaluationJson(app::EvaluateMap(map, world));
+            std::fputs(json.c_str(), stdout);
+          }};
 }
 
 }  // namespace pirouette::cli

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
 
   const std::vector<Command> commands = {
       AddRenderCommand(app),         AddIpmReportCommand(app), AddRopCommand(app),
-      AddPerceptionEvalCommand(app), AddSegmentCommand(app),   AddSegmentEvalCommand(app), AddEvalCommand(app),
+      AddPerceptionEvalCommand(app), AddSegmentCommand(app),   AddSegmentEvalCommand(app),
+      AddEvalCommand(app),           AddExploreCommand(app),   AddExploreEvalCommand(app),
   };
 
   try {

@@ -1,0 +1,78 @@
+#include <csignal>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "apps/pirouette/command.h"
+#include "pirouette/app/explore_run.h"
+
+namespace pirouette::cli {
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+extern "C" void OnInterrupt(int /*signal*/) { g_stop.store(true); }
+
+}  // namespace
+
+Command AddExploreCommand(CLI::App& parent) {
+  auto request = std::make_shared<app::ExploreRequest>();
+  auto planner = std::make_shared<std::string>("dt");
+  auto method = std::make_shared<std::string>("default");
+  CLI::App* cmd = parent.add_subcommand(
+      "explore",
+      "Drop the simulated robot into a world knowing nothing and let it map the floor by itself: "
+      "it pirouettes (12 frames, 30 degrees apart), maps the floor's edges, plans the shortest "
+      "safe path to the nearest unknown space, looks before every move, and stops when no "
+      "reachable unknown space is left. Writes OUT/map.yaml + map.pgm (ROS map_server), "
+      "map.png, run.json (with the map's evaluation against the world) and, with --video, "
+      "explore.mp4. Ctrl-C stops and still writes the map so far.\n"
+      "Exit: 0 complete or step limit, 1 stuck or interrupted (outputs still written), 2 bad "
+      "input.\n  example: pirouette explore --world worlds/soccer_field.yaml --out out --video");
+  cmd->add_option("--world", request->world_path, "world file (pirouette-world/1)")->required();
+  cmd->add_option("--out", request->out_dir, "output folder")->capture_default_str();
+  cmd->add_option("--seed", request->options.seed,
+                  "seed of the simulator's noise (camera and odometry)")
+      ->capture_default_str();
+  cmd->add_option("--max-steps", request->options.max_steps,
+                  "stop after this many straight moves (status step-limit)")
+      ->capture_default_str();
+  cmd->add_option("--planner", *planner,
+                  "dt: the paper's distance transform to the nearest unknown space; frontier: "
+                  "the explore_lite baseline")
+      ->check(CLI::IsMember({"dt", "frontier"}))
+      ->capture_default_str();
+  cmd->add_option("--method", *method, "floor segmentation: default or paper")
+      ->check(CLI::IsMember({"default", "paper"}))
+      ->capture_default_str();
+  cmd->add_option("--cell", request->options.cell_m,
+                  "map cell, metres (default: 0.01 for a robot under 0.1 m radius, else 0.02)");
+  cmd->add_option("--max-range", request->options.max_range_m,
+                  "trust readings out to this range, metres (default: the paper's rule for the "
+                  "camera and cell)");
+  cmd->add_flag("--return-home", request->options.return_home,
+                "drive back to the start when the map is complete");
+  cmd->add_flag("--video", request->video, "also write OUT/explore.mp4");
+  cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
+  return {cmd, [request, planner, method] {
+            request->options.planner = *planner == "frontier"
+                                           ? app::PlannerKind::kFrontier
+                                           : app::PlannerKind::kDistanceTransform;
+            request->options.method = *app::ParseMaskSource(*method);
+            request->options.stop_requested = &g_stop;
+            std::signal(SIGINT, OnInterrupt);
+            std::signal(SIGTERM, OnInterrupt);
+            const app::ExploreReport report = app::RunExplore(*request);
+            const std::string& status = report.result.status;
+            if (!request->quiet) {
+              std::fprintf(stderr, "explore: %s; map in %s/map.yaml\n", status.c_str(),
+                           request->out_dir.c_str());
+            }
+            if (status == "stuck") throw std::runtime_error("stuck: " + report.result.reason);
+            if (status == "interrupted") {
+              throw std::runtime_error("interrupted; the map so far is in " + request->out_dir);
+            }
+          }};
+}
+
+}  // namespace pirouette::cli

@@ -1,0 +1,52 @@
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/pirouette/command.h"
+#include "pirouette/app/explore_eval.h"
+#include "pirouette/core/input_error.h"
+
+namespace pirouette::cli {
+
+Command AddExploreEvalCommand(CLI::App& parent) {
+  auto request = std::make_shared<app::ExploreEvalRequest>();
+  auto planners =
+      std::make_shared<std::vector<std::string>>(std::vector<std::string>{"dt", "frontier"});
+  CLI::App* cmd = parent.add_subcommand(
+      "explore-eval",
+      "Explore worlds with several seeds and both planners and print the Markdown table of the "
+      "README (completion, coverage, false free/occupied, wall error, path length and stops; "
+      "the distance transform's path against the frontier baseline's). Progress on standard "
+      "error, the table on standard output.\n  example: pirouette explore-eval --world "
+      "worlds/soccer_field.yaml --world worlds/maze.yaml --seeds 1,2,3,4,5");
+  cmd->add_option("--world", request->world_paths, "world files (repeat the option)")->required();
+  cmd->add_option("--seeds", request->seeds, "seeds, comma separated")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--planner", *planners, "planners, comma separated: dt, frontier")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"dt", "frontier"}))
+      ->capture_default_str();
+  cmd->add_option("--max-steps", request->options.max_steps, "straight moves allowed a run")
+      ->capture_default_str();
+  return {cmd, [request, planners] {
+            request->planners.clear();
+            for (const std::string& p : *planners) {
+              request->planners.push_back(p == "frontier" ? app::PlannerKind::kFrontier
+                                                          : app::PlannerKind::kDistanceTransform);
+            }
+            const auto runs = app::EvaluateExploration(*request, [](const app::ExploreEvalRun& r) {
+              std::fprintf(stderr,
+                           "explore-eval: %s %s seed %llu: %s, coverage %.3f, path %.2f m, "
+                           "%d stops, %.1f s\n",
+                           r.world_name.c_str(),
+                           r.planner == app::PlannerKind::kFrontier ? "frontier" : "dt",
+                           static_cast<unsigned long long>(r.seed), r.status.c_str(),
+                           r.eval.coverage, r.path_length_m, r.stops, r.wall_time_s);
+            });
+            std::fputs(app::ExploreEvalTable(runs).c_str(), stdout);
+          }};
+}
+
+}  // namespace pirouette::cli

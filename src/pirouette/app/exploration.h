@@ -1,0 +1,114 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pirouette/app/floor_masker.h"
+#include "pirouette/core/pose2.h"
+#include "pirouette/mapping/occupancy_grid.h"
+#include "pirouette/mapping/trinary_map.h"
+#include "pirouette/sim/world.h"
+
+namespace pirouette::app {
+
+enum class PlannerKind { kDistanceTransform, kFrontier };
+
+// How a simulated exploration runs. Zero for a length means "derive it".
+struct ExplorationOptions {
+  std::uint64_t seed = 1;
+  PlannerKind planner = PlannerKind::kDistanceTransform;
+  MaskSource method = MaskSource::kDefault;
+  // Straight moves allowed before the run stops with status "step-limit".
+  int max_steps = 2000;
+  // The map's cell; 0: 1 cm for a robot of radius under 0.1 m (the paper's),
+  // else 2 cm (the apartment robot).
+  double cell_m = 0.0;
+  // The range readings are trusted to; 0: the paper's rule for the camera
+  // and the cell (camera::MaxRange).
+  double max_range_m = 0.0;
+  int pirouette_turns = 12;
+  // The sensor model. OctoMap's defaults (hit 0.7, miss 0.4) need four
+  // looks before floor reads free (below 0.196): too timid for a camera that
+  // sees each bearing in two frames of a pirouette, so the explorer would
+  // keep going back to floor it has seen. One look decides here: a miss
+  // makes an unknown cell free, a hit occupied; a hit and a miss cancel
+  // into unknown, two hits outvote a miss.
+  mapping::OccupancyOptions occupancy{.hit_probability = 0.8, .miss_probability = 0.18};
+  // Drive back to the start at the end.
+  bool return_home = false;
+  // Checked between steps; when it becomes true the run ends with status
+  // "interrupted" and the map so far.
+  const std::atomic<bool>* stop_requested = nullptr;
+};
+
+// Throws core::InputError naming the option for a bad value.
+void CheckExplorationOptions(const ExplorationOptions& options);
+
+// Where the wall time of a run went, seconds.
+struct StageTimes {
+  double render_s = 0.0;    // the simulator's camera
+  double perceive_s = 0.0;  // segmentation and obstacle profile
+  double update_s = 0.0;    // the occupancy grid
+  double plan_s = 0.0;      // configuration space, distance transform, path
+};
+
+// What a camera frame taken during the run showed, for the video.
+struct FrameEvent {
+  const cv::Mat3b& bgr;         // the camera's raw frame
+  const cv::Mat1b& floor_mask;  // 255 floor
+  const core::Pose2& odom_T_robot;
+  const mapping::OccupancyGrid& grid;
+};
+
+// The whole run, as the robot knows it (odometry frame = world frame at the
+// start) and, for the report, the simulator's truth.
+struct ExplorationResult {
+  std::string status;  // "complete", "step-limit", "stuck", "interrupted"
+  std::string reason;  // why, when stuck
+  // The map, in the odometry frame (placeholder 1 × 1 until the run starts).
+  mapping::OccupancyGrid grid{core::GridGeometry(0.01, Eigen::Vector2d::Zero(), 1, 1)};
+  std::vector<core::Pose2> path;   // odometry poses after every move, from the start
+  std::vector<core::Pose2> stops;  // where the robot pirouetted
+  core::Pose2 final_true_pose;
+  int moves = 0;  // straight moves
+  int turns = 0;  // turns on the spot, pirouettes' included
+  int pirouettes = 0;
+  int frames = 0;
+  int blocked_looks = 0;  // looks that found the way blocked
+  int backups = 0;        // backing up to see a blind area's base
+  double path_length_m = 0.0;
+  double rotation_deg = 0.0;
+  double wall_time_s = 0.0;
+  StageTimes times;
+};
+
+// Progress after every step, for the terminal.
+struct ExplorationProgress {
+  int moves = 0;
+  int pirouettes = 0;
+  double known_area_m2 = 0.0;
+  double elapsed_s = 0.0;
+};
+
+struct ExplorationObserver {
+  std::function<void(const ExplorationProgress&)> on_progress;
+  std::function<void(const FrameEvent&)> on_frame;
+};
+
+// Explores `world` in the simulator from its robot's start, knowing nothing
+// (Taylor, Geva & Boles 2005, §4): a pirouette, then repeatedly: plan to the
+// nearest unknown space, and for each straight move face it, look, check the
+// floor is free for the whole move (else map what is there and plan again),
+// drive, and pirouette at the goal; until no reachable unknown space is left.
+// Throws core::InputError for bad options, sim::RenderError when no OpenGL.
+ExplorationResult Explore(const sim::World& world, const ExplorationOptions& options,
+                          const ExplorationObserver& observer = {});
+
+// The map cell Explore uses for a world by default.
+double DefaultCellSize(const sim::World& world);
+
+}  // namespace pirouette::app

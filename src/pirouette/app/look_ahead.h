@@ -1,0 +1,71 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "pirouette/camera/inverse_perspective_map.h"
+#include "pirouette/core/obstacle_profile.h"
+#include "pirouette/mapping/trinary_map.h"
+
+namespace pirouette::app {
+
+struct LookAheadOptions {
+  double radius_m = 0.0;     // the robot's disc
+  double near_m = 0.0;       // the camera sees no floor nearer than this (under it)
+  double max_range_m = 0.0;  // readings are trusted out to this range
+  // The map's cell: the planner keeps cell centres a radius from occupied
+  // cell centres, so a reading nearer the swept disc's rim than this is the
+  // map's business, not the look's (else look and plan disagree forever).
+  double cell_m = 0.0;
+};
+
+enum class LookVerdict {
+  kClear,    // the floor is free for the whole move, as far as the camera sees
+  kBlocked,  // an obstacle's base is in the way
+  kBlind,    // something fills the view in the way: its base is under the camera
+};
+
+// The paper's "look before moving" (Taylor, Geva & Boles 2005, §4): before a
+// straight move, the robot faces it and takes a frame; the move is made only
+// when that frame shows the floor free for the whole swept corridor (the
+// robot's disc along the move: points within radius_m - cell_m of the
+// segment). The floor nearer than near_m is not seen
+// then: the planner only sends the robot over floor the map knows is free.
+class LookAhead {
+ public:
+  explicit LookAhead(const LookAheadOptions& options) : options_(options) {}
+
+  const LookAheadOptions& options() const { return options_; }
+
+  // The longest forward move one frame can vouch for: its swept disc must end
+  // within the max range.
+  double LongestCheckedMove() const;
+
+  // Judges a forward move of `distance_m` (> 0) from the frame's profile,
+  // taken facing the move (readings in the robot frame).
+  LookVerdict Check(const core::ObstacleProfile& profile, double distance_m) const {
+    return Blocking(profile, distance_m).verdict;
+  }
+
+  struct Finding {
+    LookVerdict verdict = LookVerdict::kClear;
+    // For kBlocked: the hits inside the swept corridor, robot frame.
+    std::vector<Eigen::Vector2d> hits_robot;
+  };
+  // Check, and where the way is blocked.
+  Finding Blocking(const core::ObstacleProfile& profile, double distance_m) const;
+
+ private:
+  LookAheadOptions options_;
+};
+
+// The range of the farthest floor point the image's bottom row sees: nearer
+// than this, some bearings of the camera see no floor at all.
+double NearRange(const camera::InversePerspectiveMap& ipm);
+
+// True when every cell whose centre lies within radius_m (plus half a cell)
+// of the segment from -> to is known free in `map`.
+bool CorridorKnownFree(const mapping::TrinaryMap& map, const Eigen::Vector2d& from,
+                       const Eigen::Vector2d& to, double radius_m);
+
+}  // namespace pirouette::app

@@ -1,0 +1,67 @@
+#include "pirouette/explore/configuration_space.h"
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace pirouette::explore {
+namespace {
+
+using mapping::CellState;
+
+struct Offset {
+  int dx;
+  int dy;
+};
+
+// The cell offsets whose centres lie within `radius_cells` of the origin's.
+std::vector<Offset> DiscOffsets(double radius_cells) {
+  // A hair of slack so that a radius of exactly n cells includes the cells n away.
+  const double r2 = radius_cells * radius_cells * (1.0 + 1e-12);
+  const int reach = static_cast<int>(std::floor(radius_cells));
+  std::vector<Offset> offsets;
+  for (int dy = -reach; dy <= reach; ++dy) {
+    for (int dx = -reach; dx <= reach; ++dx) {
+      if (static_cast<double>(dx * dx + dy * dy) <= r2) offsets.push_back({dx, dy});
+    }
+  }
+  return offsets;
+}
+
+}  // namespace
+
+mapping::TrinaryMap MakeConfigurationSpace(const mapping::TrinaryMap& map, double robot_radius_m) {
+  if (!std::isfinite(robot_radius_m) || robot_radius_m < 0.0) {
+    throw std::invalid_argument("MakeConfigurationSpace: the robot radius must be finite and >= 0");
+  }
+  const core::GridGeometry& g = map.geometry;
+  const int w = g.width();
+  const int h = g.height();
+  mapping::TrinaryMap cspace = map;
+  const auto occupied = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < w && y < h &&
+           map.cells[static_cast<std::size_t>(y) * w + x] == CellState::kOccupied;
+  };
+  const std::vector<Offset> disc = DiscOffsets(robot_radius_m / g.resolution());
+  // The occupied cell nearest any cell outside an obstacle has a 4-neighbour
+  // that is not occupied (else a neighbour towards that cell would be nearer),
+  // so stamping the discs of those boundary cells alone is exact.
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (!occupied(x, y)) continue;
+      if (occupied(x - 1, y) && occupied(x + 1, y) && occupied(x, y - 1) && occupied(x, y + 1)) {
+        continue;
+      }
+      for (const Offset& o : disc) {
+        const int cx = x + o.dx;
+        const int cy = y + o.dy;
+        if (cx < 0 || cy < 0 || cx >= w || cy >= h) continue;
+        cspace.cells[static_cast<std::size_t>(cy) * w + cx] = CellState::kOccupied;
+      }
+    }
+  }
+  return cspace;
+}
+
+}  // namespace pirouette::explore

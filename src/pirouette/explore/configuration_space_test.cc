@@ -1,0 +1,96 @@
+#include "pirouette/explore/configuration_space.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+
+namespace pirouette::explore {
+namespace {
+
+using mapping::CellState;
+
+mapping::TrinaryMap Uniform(int w, int h, double resolution, CellState state) {
+  return {core::GridGeometry(resolution, {0.0, 0.0}, w, h),
+          std::vector<CellState>(static_cast<std::size_t>(w) * h, state)};
+}
+
+int Count(const mapping::TrinaryMap& map, CellState state) {
+  return static_cast<int>(std::count(map.cells.begin(), map.cells.end(), state));
+}
+
+TEST(ConfigurationSpaceTest, OneObstacleGrowsIntoADiscOfTheRadius) {
+  mapping::TrinaryMap map = Uniform(21, 21, 0.01, CellState::kFree);
+  map.cells[map.geometry.Flat({10, 10})] = CellState::kOccupied;
+  const mapping::TrinaryMap cspace = MakeConfigurationSpace(map, 0.05);
+  // The cells whose centres lie within 5 cells of the obstacle's: 81 of them.
+  EXPECT_EQ(Count(cspace, CellState::kOccupied), 81);
+  EXPECT_EQ(cspace.At({15, 10}), CellState::kOccupied);  // exactly the radius away
+  EXPECT_EQ(cspace.At({16, 10}), CellState::kFree);
+  EXPECT_EQ(cspace.At({14, 13}), CellState::kOccupied);  // 3-4-5
+  EXPECT_EQ(cspace.At({14, 14}), CellState::kFree);      // 5.66 cells away
+  EXPECT_EQ(cspace.geometry, map.geometry);
+}
+
+TEST(ConfigurationSpaceTest, UnknownIsNotGrownAndStaysUnknown) {
+  mapping::TrinaryMap map = Uniform(15, 15, 0.01, CellState::kUnknown);
+  map.cells[map.geometry.Flat({2, 2})] = CellState::kFree;
+  map.cells[map.geometry.Flat({12, 12})] = CellState::kFree;
+  map.cells[map.geometry.Flat({3, 2})] = CellState::kOccupied;
+  const mapping::TrinaryMap cspace = MakeConfigurationSpace(map, 0.02);
+  EXPECT_EQ(cspace.At({2, 2}), CellState::kOccupied);  // free but next to an obstacle
+  EXPECT_EQ(cspace.At({12, 12}), CellState::kFree);
+  EXPECT_EQ(cspace.At({5, 2}), CellState::kOccupied);  // unknown within the radius is blocked
+  EXPECT_EQ(cspace.At({8, 8}), CellState::kUnknown);
+  EXPECT_EQ(Count(cspace, CellState::kOccupied), 13);
+}
+
+TEST(ConfigurationSpaceTest, ZeroRadiusChangesNothing) {
+  mapping::TrinaryMap map = Uniform(4, 3, 0.1, CellState::kFree);
+  map.cells[5] = CellState::kOccupied;
+  map.cells[7] = CellState::kUnknown;
+  EXPECT_EQ(MakeConfigurationSpace(map, 0.0).cells, map.cells);
+}
+
+TEST(ConfigurationSpaceTest, EqualsBruteForceOnRandomMaps) {
+  std::mt19937 rng(42);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int w = 5 + static_cast<int>(rng() % 40);
+    const int h = 5 + static_cast<int>(rng() % 40);
+    const double radius = 0.01 * static_cast<double>(rng() % 70) / 10.0;
+    mapping::TrinaryMap map = Uniform(w, h, 0.01, CellState::kFree);
+    const std::uint32_t density = rng() % 30;
+    for (CellState& c : map.cells) {
+      const std::uint32_t roll = rng() % 100;
+      c = roll < density ? CellState::kOccupied
+          : roll < 50    ? CellState::kFree
+                         : CellState::kUnknown;
+    }
+    const mapping::TrinaryMap cspace = MakeConfigurationSpace(map, radius);
+    const double r_cells = radius / 0.01;
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        bool near = false;
+        for (int oy = 0; oy < h && !near; ++oy) {
+          for (int ox = 0; ox < w && !near; ++ox) {
+            near = map.At({ox, oy}) == CellState::kOccupied &&
+                   (ox - x) * (ox - x) + (oy - y) * (oy - y) <= r_cells * r_cells + 1e-9;
+          }
+        }
+        const CellState expected = near ? CellState::kOccupied : map.At({x, y});
+        ASSERT_EQ(cspace.At({x, y}), expected)
+            << "trial " << trial << " cell " << x << ", " << y << " radius " << radius;
+      }
+    }
+  }
+}
+
+TEST(ConfigurationSpaceTest, RejectsBadRadius) {
+  const mapping::TrinaryMap map = Uniform(2, 2, 0.1, CellState::kFree);
+  EXPECT_THROW(MakeConfigurationSpace(map, -0.1), std::invalid_argument);
+  EXPECT_THROW(MakeConfigurationSpace(map, std::nan("")), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pirouette::explore

@@ -1,0 +1,175 @@
+#include "pirouette/mapping/occupancy_grid.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace pirouette::mapping {
+namespace {
+
+void CheckOpenUnit(double p, const char* field) {
+  if (!(p > 0.0 && p < 1.0)) {
+    throw std::invalid_argument(std::string("OccupancyOptions.") + field +
+                                " must lie strictly between 0 and 1, got " + std::to_string(p));
+  }
+}
+
+void Refuse(const char* field, const char* why, double value) {
+  throw std::invalid_argument(std::string("OccupancyOptions.") + field + " " + why + ", got " +
+                              std::to_string(value));
+}
+
+const OccupancyOptions& Checked(const OccupancyOptions& options) {
+  options.Check();
+  return options;
+}
+
+}  // namespace
+
+void OccupancyOptions::Check() const {
+  CheckOpenUnit(hit_probability, "hit_probability");
+  CheckOpenUnit(miss_probability, "miss_probability");
+  CheckOpenUnit(blind_probability, "blind_probability");
+  CheckOpenUnit(clamp_min_probability, "clamp_min_probability");
+  CheckOpenUnit(clamp_max_probability, "clamp_max_probability");
+  if (!(hit_probability > 0.5)) Refuse("hit_probability", "must be above 0.5", hit_probability);
+  if (!(miss_probability < 0.5)) Refuse("miss_probability", "must be below 0.5", miss_probability);
+  if (!(blind_probability > 0.5)) {
+    Refuse("blind_probability", "must be above 0.5", blind_probability);
+  }
+  if (!(clamp_min_probability < kFreeThreshold)) {
+    Refuse("clamp_min_probability", "must be below the free threshold 0.196",
+           clamp_min_probability);
+  }
+  if (!(clamp_max_probability > kOccupiedThreshold)) {
+    Refuse("clamp_max_probability", "must be above the occupied threshold 0.65",
+           clamp_max_probability);
+  }
+}
+
+double ProbabilityToLogOdds(double probability) {
+  return std::log(probability / (1.0 - probability));
+}
+
+double LogOddsToProbability(double log_odds) { return 1.0 / (1.0 + std::exp(-log_odds)); }
+
+OccupancyGrid::OccupancyGrid(core::GridGeometry geometry, OccupancyOptions options)
+    : geometry_(std::move(geometry)),
+      options_(Checked(options)),
+      hit_(static_cast<float>(ProbabilityToLogOdds(options_.hit_probability))),
+      miss_(static_cast<float>(ProbabilityToLogOdds(options_.miss_probability))),
+      blind_(static_cast<float>(ProbabilityToLogOdds(options_.blind_probability))),
+      clamp_min_(static_cast<float>(ProbabilityToLogOdds(options_.clamp_min_probability))),
+      clamp_max_(static_cast<float>(ProbabilityToLogOdds(options_.clamp_max_probability))),
+      occupied_above_(static_cast<float>(ProbabilityToLogOdds(kOccupiedThreshold))),
+      free_below_(static_cast<float>(ProbabilityToLogOdds(kFreeThreshold))),
+      cells_(geometry_.CellCount()) {
+  blind_cap_ = std::min(blind_, clamp_max_);
+}
+
+double OccupancyGrid::Probability(const core::CellIndex& c) const {
+  return LogOddsToProbability(LogOdds(c));
+}
+
+TrinaryMap OccupancyGrid::ToTrinary() const {
+  TrinaryMap map{geometry_, std::vector<CellState>(cells_.size())};
+  for (std::size_t i = 0; i < cells_.size(); ++i) map.cells[i] = StateOf(cells_[i]);
+  return map;
+}
+
+void OccupancyGrid::BeginFrame() {
+  if (++frame_ == 0) {
+    // After 2^32 frames the stamps wrap: keep "touched" (1) and start again.
+    for (Cell& cell : cells_) cell.stamp = cell.stamp == 0 ? 0 : 1;
+    frame_ = 2;
+  }
+}
+
+void OccupancyGrid::SetFree(const core::CellIndex& c) {
+  if (!geometry_.Contains(c)) return;
+  Cell& cell = cells_[geometry_.Flat(c)];
+  cell.log_odds = clamp_min_;
+  cell.stamp = frame_;
+}
+
+void OccupancyGrid::GrowToCover(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+  if (!lo.allFinite() || !hi.allFinite() || !(lo.array() <= hi.array()).all()) {
+    throw std::invalid_argument("OccupancyGrid::GrowToCover: needs finite lo <= hi");
+  }
+  const double resolution = geometry_.resolution();
+  const Eigen::Vector2d cells_lo = (lo - geometry_.origin()) / resolution;
+  const Eigen::Vector2d cells_hi = (hi - geometry_.origin()) / resolution;
+  const double limit = 4.0 * kMaxSideCells;  // keeps the casts below defined
+  if ((cells_lo.array().abs() > limit).any() || (cells_hi.array().abs() > limit).any()) {
+    throw std::length_error("OccupancyGrid::GrowToCover: the grid would grow too large");
+  }
+  // The cells the rectangle plus the margin spans, in the current indices.
+  const int x0 = static_cast<int>(std::floor(cells_lo.x())) - kGrowMarginCells;
+  const int y0 = static_cast<int>(std::floor(cells_lo.y())) - kGrowMarginCells;
+  const int x1 = static_cast<int>(std::floor(cells_hi.x())) + kGrowMarginCells;
+  const int y1 = static_cast<int>(std::floor(cells_hi.y())) + kGrowMarginCells;
+  const int width = geometry_.width();
+  const int height = geometry_.height();
+  if (x0 >= 0 && y0 >= 0 && x1 < width && y1 < height) return;
+
+  const int chunk = static_cast<int>(std::ceil(kGrowChunkM / resolution));
+  const auto grow = [](int lacking, int chunk_cells) {
+    return lacking > 0 ? lacking + chunk_cells : 0;
+  };
+  const int left = grow(-x0, std::max(chunk, width));
+  const int right = grow(x1 - (width - 1), std::max(chunk, width));
+  const int bottom = grow(-y0, std::max(chunk, height));
+  const int top = grow(y1 - (height - 1), std::max(chunk, height));
+  const long new_width = static_cast<long>(width) + left + right;
+  const long new_height = static_cast<long>(height) + bottom + top;
+  if (new_width > kMaxSideCells || new_height > kMaxSideCells) {
+    throw std::length_error("OccupancyGrid::GrowToCover: the grid would grow too large");
+  }
+
+  const core::GridGeometry grown(resolution,
+                                 geometry_.origin() - Eigen::Vector2d(left, bottom) * resolution,
+                                 static_cast<int>(new_width), static_cast<int>(new_height));
+  std::vector<Cell> cells(grown.CellCount());
+  for (int y = 0; y < height; ++y) {
+    const auto from = cells_.begin() + static_cast<std::ptrdiff_t>(geometry_.Flat({0, y}));
+    std::copy(from, from + width,
+              cells.begin() + static_cast<std::ptrdiff_t>(grown.Flat({left, y + bottom})));
+  }
+  geometry_ = grown;
+  cells_ = std::move(cells);
+}
+
+OccupancyGrid OccupancyGrid::CroppedToKnown(int margin_cells) const {
+  int x0 = geometry_.width();
+  int y0 = geometry_.height();
+  int x1 = -1;
+  int y1 = -1;
+  for (int y = 0; y < geometry_.height(); ++y) {
+    for (int x = 0; x < geometry_.width(); ++x) {
+      if (cells_[geometry_.Flat({x, y})].stamp == 0) continue;
+      x0 = std::min(x0, x);
+      y0 = std::min(y0, y);
+      x1 = std::max(x1, x);
+      y1 = std::max(y1, y);
+    }
+  }
+  if (x1 < 0) return *this;
+  x0 = std::max(0, x0 - margin_cells);
+  y0 = std::max(0, y0 - margin_cells);
+  x1 = std::min(geometry_.width() - 1, x1 + margin_cells);
+  y1 = std::min(geometry_.height() - 1, y1 + margin_cells);
+  const double r = geometry_.resolution();
+  OccupancyGrid cropped(core::GridGeometry(r, geometry_.origin() + Eigen::Vector2d(x0 * r, y0 * r),
+                                           x1 - x0 + 1, y1 - y0 + 1),
+                        options_);
+  cropped.frame_ = frame_;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      cropped.cells_[cropped.geometry_.Flat({x - x0, y - y0})] = cells_[geometry_.Flat({x, y})];
+    }
+  }
+  return cropped;
+}
+
+}  // namespace pirouette::mapping

@@ -1,0 +1,182 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "pirouette/core/grid_geometry.h"
+#include "pirouette/mapping/trinary_map.h"
+
+namespace pirouette::mapping {
+
+// The Bayes update of one cell, in probabilities; the grid turns them into
+// log-odds once, when it is built (OctoMap's sensor model). The defaults are
+// OctoMap's. A plain struct: Check() before use.
+struct OccupancyOptions {
+  double hit_probability = 0.7;   // P(occupied | hit) for the cell at a reading's range
+  double miss_probability = 0.4;  // P(occupied | miss) for the cells a reading sees through
+  // The value of a blind area (ObstacleProfile's kBlind: an obstacle's base
+  // is somewhere in it, unseen): a cell no reading ever touched becomes
+  // exactly blind_probability; a cell that any reading touched before is left
+  // alone (a blind view neither confirms nor refutes what was seen: the base
+  // may lie anywhere in the area, and what was seen free there still is).
+  // 0.6 lies half-way between unknown (0.5) and what a hit says (0.7), and
+  // below kOccupiedThreshold: a blind area alone is known (the explorer does
+  // not chase it), not free (the planner does not drive into it), and not
+  // occupied (the map does not draw walls that were never seen).
+  double blind_probability = 0.6;
+  double clamp_min_probability = 0.12;  // log-odds never go below this one's (OctoMap)
+  double clamp_max_probability = 0.97;  // nor above this one's
+
+  // Throws std::invalid_argument naming the field unless every probability is
+  // in (0, 1), miss < 0.5 < hit, blind > 0.5, clamp_min < kFreeThreshold and
+  // clamp_max > kOccupiedThreshold (else no cell could ever read free or
+  // occupied).
+  void Check() const;
+};
+
+// Thresholds of the trinary map, matching map.yaml (SPEC.md): a cell is
+// occupied when its probability is above kOccupiedThreshold, free below
+// kFreeThreshold, unknown otherwise.
+inline constexpr double kOccupiedThreshold = 0.65;
+inline constexpr double kFreeThreshold = 0.196;
+
+// Cell sizes (metres) for the robots the issue names: the paper's small robot
+// on its 1.5 m field, and the apartment robot.
+inline constexpr double kPaperRobotCellSizeM = 0.01;
+inline constexpr double kApartmentRobotCellSizeM = 0.02;
+
+// log(p / (1 - p)) and its inverse.
+double ProbabilityToLogOdds(double probability);
+double LogOddsToProbability(double log_odds);
+
+// What one reading says about one cell.
+enum class CellUpdate : std::uint8_t {
+  kHit,    // L ← min(L + logit(hit), clamp max)
+  kMiss,   // L ← max(L + logit(miss), clamp min)
+  kBlind,  // L ← min(logit(blind), clamp max) if the cell was never touched, see OccupancyOptions
+};
+
+// An occupancy grid in clamped log-odds (OctoMap): per cell L = log(p/(1-p)),
+// 0 = unknown (p = 0.5), and a mark of whether any reading ever touched it
+// (never NaN as a marker). Updates come in frames: between two BeginFrame()
+// calls each cell changes at most once, so the first update a cell gets in a
+// frame is the one that counts; the sensor model applies hits before the rest
+// so that a hit wins (Cartographer). The per-frame mark is a frame stamp per
+// cell, so starting a frame costs nothing.
+class OccupancyGrid {
+ public:
+  // Throws std::invalid_argument when options fail Check().
+  explicit OccupancyGrid(core::GridGeometry geometry, OccupancyOptions options = {});
+
+  const core::GridGeometry& geometry() const { return geometry_; }
+  const OccupancyOptions& options() const { return options_; }
+
+  // The probability of occupancy; 0.5 off the grid.
+  double Probability(const core::CellIndex& c) const;
+  // The log-odds of occupancy; 0 off the grid.
+  float LogOdds(const core::CellIndex& c) const {
+    return geometry_.Contains(c) ? cells_[geometry_.Flat(c)].log_odds : 0.0F;
+  }
+  // kOccupied above kOccupiedThreshold, kFree below kFreeThreshold, else
+  // kUnknown; kUnknown off the grid and for cells never touched.
+  CellState State(const core::CellIndex& c) const {
+    return geometry_.Contains(c) ? StateOf(cells_[geometry_.Flat(c)]) : CellState::kUnknown;
+  }
+  // Whether any update ever touched the cell (false off the grid).
+  bool Known(const core::CellIndex& c) const {
+    return geometry_.Contains(c) && cells_[geometry_.Flat(c)].stamp != 0;
+  }
+  // The whole grid by State(), on the same geometry.
+  TrinaryMap ToTrinary() const;
+  // A copy holding only the bounding box of the cells any update touched,
+  // plus `margin_cells` all round (the same cells at the same world
+  // positions): the map to write out. A grid nothing touched stays whole.
+  OccupancyGrid CroppedToKnown(int margin_cells) const;
+  // How many cells any update ever touched.
+  std::size_t KnownCellCount() const {
+    return static_cast<std::size_t>(
+        std::count_if(cells_.begin(), cells_.end(), [](const Cell& c) { return c.stamp != 0; }));
+  }
+
+  // Grows the grid so that it covers the world rectangle [lo, hi] plus a
+  // margin of kGrowMarginCells cells on every side, keeping every cell's value
+  // and world position (the origin moves by whole cells); a no-op when it
+  // already does. A side that falls short grows by what it lacks plus
+  // max(1 m, the grid's size along that axis), so that growth is rare and
+  // amortised. Throws std::invalid_argument unless lo <= hi and both are
+  // finite, std::length_error when a side would pass kMaxSideCells.
+  void GrowToCover(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
+  static constexpr int kGrowMarginCells = 2;
+  static constexpr double kGrowChunkM = 1.0;
+  static constexpr int kMaxSideCells = 1 << 15;
+
+  // Starts a new frame: from now on each cell takes at most one update until
+  // the next call.
+  void BeginFrame();
+  // The number of frames begun so far.
+  std::uint32_t frame() const { return frame_; }
+
+  // Applies `update` to cell `c` unless it is off the grid or already changed
+  // in this frame; returns whether it was applied.
+  bool Apply(const core::CellIndex& c, CellUpdate update) {
+    return geometry_.Contains(c) && ApplyAt(geometry_.Flat(c), update);
+  }
+  // The same for the row-major index `flat` < geometry().CellCount(),
+  // unchecked: the sensor model's inner loop.
+  bool ApplyAt(std::size_t flat, CellUpdate update) {
+    Cell& cell = cells_[flat];
+    if (cell.stamp == frame_) return false;
+    const bool touched = cell.stamp != 0;
+    cell.stamp = frame_;
+    switch (update) {
+      case CellUpdate::kHit:
+        cell.log_odds = std::min(cell.log_odds + hit_, clamp_max_);
+        break;
+      case CellUpdate::kMiss:
+        cell.log_odds = std::max(cell.log_odds + miss_, clamp_min_);
+        break;
+      case CellUpdate::kBlind:
+        // Only a cell no reading ever touched takes it (stamp was 0).
+        if (!touched) cell.log_odds = blind_cap_;
+        break;
+    }
+    return true;
+  }
+
+  // Sets cell `c` (if on the grid) to the free clamp, known, whatever it held
+  // and whether or not it changed in this frame: for floor known to be free
+  // for certain, such as under the robot's footprint.
+  void SetFree(const core::CellIndex& c);
+
+ private:
+  struct Cell {
+    float log_odds = 0.0F;
+    std::uint32_t stamp = 0;  // the frame of the last update; 0: never touched
+  };
+
+  CellState StateOf(const Cell& cell) const {
+    if (cell.stamp == 0) return CellState::kUnknown;
+    if (cell.log_odds > occupied_above_) return CellState::kOccupied;
+    if (cell.log_odds < free_below_) return CellState::kFree;
+    return CellState::kUnknown;
+  }
+
+  core::GridGeometry geometry_;
+  OccupancyOptions options_;
+  // The sensor model in log-odds, built once from the checked options.
+  float hit_;
+  float miss_;
+  float blind_;
+  float blind_cap_;  // min(logit(blind), clamp max)
+  float clamp_min_;
+  float clamp_max_;
+  float occupied_above_;  // logit(kOccupiedThreshold)
+  float free_below_;      // logit(kFreeThreshold)
+  std::uint32_t frame_ = 1;
+  std::vector<Cell> cells_;  // row-major, geometry_.CellCount()
+};
+
+}  // namespace pirouette::mapping

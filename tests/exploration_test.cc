@@ -1,0 +1,87 @@
+// Whole explorations in the simulator (issue 4): the robot, knowing nothing,
+// maps a world by itself to status "complete" within the issue's bounds:
+// coverage >= 0.98, false_free <= 0.005, false_occupied <= 0.02,
+// wall_error_m <= one map cell.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "pirouette/app/exploration.h"
+#include "pirouette/app/map_evaluation.h"
+#include "pirouette/sim/world_file.h"
+
+namespace pirouette::app {
+namespace {
+
+std::string WorldPath(const std::string& name) {
+  return std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml";
+}
+
+void ExpectExploredWithinBounds(const std::string& name, PlannerKind planner) {
+  const sim::World world = sim::LoadWorldFile(WorldPath(name));
+  ExplorationOptions options;
+  options.seed = 1;
+  options.planner = planner;
+  const ExplorationResult result = Explore(world, options);
+  const MapEvaluation eval = EvaluateMap(result.grid.ToTrinary(), world);
+  const double cell = result.grid.geometry().resolution();
+  EXPECT_EQ(result.status, "complete") << name << ": " << result.reason;
+  EXPECT_GE(eval.coverage, 0.98) << name;
+  EXPECT_LE(eval.false_free, 0.005) << name;
+  EXPECT_LE(eval.false_occupied, 0.02) << name;
+  EXPECT_LE(eval.wall_error_m, cell) << name;
+  EXPECT_GT(result.pirouettes, 1) << name;
+  // Every pirouette's frames, and a look before every straight move.
+  EXPECT_GE(result.frames, result.pirouettes * options.pirouette_turns + result.moves) << name;
+}
+
+TEST(ExplorationTest, SoccerFieldIsMappedCompletely) {
+  ExpectExploredWithinBounds("soccer_field", PlannerKind::kDistanceTransform);
+}
+
+TEST(ExplorationTest, MazeIsMappedCompletely) {
+  ExpectExploredWithinBounds("maze", PlannerKind::kDistanceTransform);
+}
+
+TEST(ExplorationTest, FrontierBaselineMapsTheSoccerField) {
+  ExpectExploredWithinBounds("soccer_field", PlannerKind::kFrontier);
+}
+
+TEST(ExplorationTest, SameWorldAndSeedGiveTheSameMap) {
+  const sim::World world = sim::LoadWorldFile(WorldPath("soccer_field"));
+  ExplorationOptions options;
+  options.seed = 3;
+  options.max_steps = 15;
+  const ExplorationResult a = Explore(world, options);
+  const ExplorationResult b = Explore(world, options);
+  const mapping::TrinaryMap map_a = a.grid.ToTrinary();
+  const mapping::TrinaryMap map_b = b.grid.ToTrinary();
+  EXPECT_EQ(map_a.geometry, map_b.geometry);
+  EXPECT_TRUE(map_a.cells == map_b.cells);
+  EXPECT_EQ(a.moves, b.moves);
+  EXPECT_EQ(a.status, "step-limit");
+}
+
+TEST(ExplorationTest, StepLimitStopsTheRun) {
+  const sim::World world = sim::LoadWorldFile(WorldPath("soccer_field"));
+  ExplorationOptions options;
+  options.max_steps = 3;
+  const ExplorationResult result = Explore(world, options);
+  EXPECT_EQ(result.status, "step-limit");
+  EXPECT_EQ(result.moves, 3);
+}
+
+TEST(ExplorationTest, AStopRequestEndsTheRunWithTheMapSoFar) {
+  const sim::World world = sim::LoadWorldFile(WorldPath("soccer_field"));
+  const std::atomic<bool> stop{true};
+  ExplorationOptions options;
+  options.stop_requested = &stop;
+  const ExplorationResult result = Explore(world, options);
+  EXPECT_EQ(result.status, "interrupted");
+  EXPECT_EQ(result.pirouettes, 1);  // the first look all round is always made
+  EXPECT_GT(result.grid.KnownCellCount(), 1000u);
+}
+
+}  // namespace
+}  // namespace pirouette::app

@@ -1,0 +1,80 @@
+// `pirouette explore` as a user runs it: its outputs (SPEC.md) and its
+// answers to bad input.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "run_pirouette.h"
+
+namespace pirouette::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string World(const std::string& name) {
+  return std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml";
+}
+
+fs::path TempDir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() /
+                       ("pirouette_explore_cli_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string Slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
+  const fs::path out = TempDir("outputs");
+  const RunResult run = RunPirouette("explore --world " + World("soccer_field") + " --out " +
+                                     out.string() + " --max-steps 4 --video --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.output();
+  EXPECT_TRUE(run.stdout_only.empty()) << run.stdout_only;
+  for (const char* name : {"map.yaml", "map.pgm", "map.png", "run.json", "explore.mp4"}) {
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(out / "explore.mp4.partial.mp4"));
+  const nlohmann::json json = nlohmann::json::parse(Slurp(out / "run.json"));
+  EXPECT_EQ(json["format"], "pirouette-run/1");
+  EXPECT_EQ(json["status"], "step-limit");
+  EXPECT_EQ(json["moves"], 4);
+  EXPECT_EQ(json["seed"], 1);
+  EXPECT_GE(json["pirouettes"].get<int>(), 1);
+  EXPECT_GE(json["frames"].get<int>(), 12);
+  for (const char* field : {"turns", "path_length_m", "rotation_deg", "wall_time_s"}) {
+    EXPECT_TRUE(json.contains(field)) << field;
+  }
+  for (const char* field : {"coverage", "false_free", "false_occupied", "wall_error_m", "cells"}) {
+    EXPECT_TRUE(json["eval"].contains(field)) << field;
+  }
+  EXPECT_EQ(Slurp(out / "map.pgm").substr(0, 2), "P5");
+  // The map it wrote evaluates to what run.json says.
+  const RunResult eval = RunPirouette("eval --world " + World("soccer_field") + " --map " +
+                                      (out / "map.yaml").string());
+  ASSERT_EQ(eval.exit_code, 0) << eval.output();
+  const nlohmann::json evaluated = nlohmann::json::parse(eval.stdout_only);
+  EXPECT_EQ(evaluated["cells"], json["eval"]["cells"]);
+  fs::remove_all(out);
+}
+
+TEST(ExploreCliTest, BadInputIsRefusedWithExitTwo) {
+  const fs::path out = TempDir("bad");
+  EXPECT_EQ(RunPirouette("explore --world /nonexistent.yaml --out " + out.string()).exit_code, 2);
+  const RunResult steps = RunPirouette("explore --world " + World("soccer_field") + " --out " +
+                                       out.string() + " --max-steps 0");
+  EXPECT_EQ(steps.exit_code, 2);
+  EXPECT_NE(steps.stderr_only.find("--max-steps"), std::string::npos) << steps.stderr_only;
+  EXPECT_EQ(RunPirouette("explore --world " + World("soccer_field") + " --planner astar").exit_code,
+            2);
+  fs::remove_all(out);
+}
+
+}  // namespace
+}  // namespace pirouette::testing
