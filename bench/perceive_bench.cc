@@ -4,10 +4,13 @@
 //
 //   build/release/bench/pirouette_bench --benchmark_filter='perceive/'
 //
-// perceive/pirouette/WxH: the default segmenter (vignetting correction by a
-//   lookup table, floor appearance + edges, on the raw image) and
-//   vision::ExtractProfile through the inverse perspective map, a lookup
-//   table built once.
+// perceive/pirouette/WxH: the default segmenter (on a working grid of cells
+//   at most 160 wide: the frame reduced and corrected for vignetting in one
+//   pass, floor appearance + edges, the boundary refined to the pixel) and
+//   the profile through the inverse perspective map, both lookup tables
+//   built once: vision::ProfileExtractor, which keeps per column where the
+//   floor points end or leave the range (the same readings as
+//   vision::ExtractProfile; profile/ below compares the two).
 // perceive/pirouette-paper/WxH: the same with the paper's segmenter.
 // perceive/opencv/WxH: cv::undistort of the whole image, cvtColor,
 //   GaussianBlur, Canny, floodFill from the bottom centre, then in each column
@@ -19,6 +22,11 @@
 // learn the floor online, so they see the pirouette once before timing, as
 // the robot's first pirouette. The `hits` counter (columns read as hits, a
 // frame) checks that both sides find the floor's edge. Names follow `<stage>/<who>/<size>`.
+//
+// profile/extract-profile/WxH and profile/profile-extractor/WxH: the profile
+// stage alone on the default segmenter's masks of the same frames, by the
+// free function (which walks every floor pixel's floor point) and by the
+// extractor built once.
 
 #include <benchmark/benchmark.h>
 
@@ -80,13 +88,14 @@ void PerceivePirouette(benchmark::State& state, pirouette::vision::SegmentationM
       pirouette::bench::Scaled(pirouette::bench::SoccerField().robot().camera, width, height);
   const pirouette::camera::InversePerspectiveMap ipm(camera);
   const double max_range_m = pirouette::camera::MaxRange(camera);
+  const pirouette::vision::ProfileExtractor extractor(ipm, max_range_m);
   const auto segmenter = pirouette::vision::MakeFloorSegmenter(method, camera);
   for (const cv::Mat3b& frame : frames) benchmark::DoNotOptimize(segmenter->Segment(frame));
   std::size_t i = 0;
   long hits = 0;
   for (auto _ : state) {
     const cv::Mat1b mask = segmenter->Segment(frames[i++ % frames.size()]);
-    const auto profile = pirouette::vision::ExtractProfile(mask, ipm, max_range_m);
+    const auto profile = extractor.Extract(mask);
     hits += CountHits(profile);
     benchmark::DoNotOptimize(profile);
   }
@@ -149,6 +158,34 @@ void PerceiveOpenCv(benchmark::State& state, int width, int height) {
       benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// The profile stage alone: ExtractProfile per frame, or a ProfileExtractor.
+void ExtractProfiles(benchmark::State& state, bool extractor_built_once, int width, int height) {
+  cv::setNumThreads(1);
+  const auto& frames = Frames(width, height);
+  const CameraModel camera =
+      pirouette::bench::Scaled(pirouette::bench::SoccerField().robot().camera, width, height);
+  const pirouette::camera::InversePerspectiveMap ipm(camera);
+  const double max_range_m = pirouette::camera::MaxRange(camera);
+  const pirouette::vision::ProfileExtractor extractor(ipm, max_range_m);
+  const auto segmenter = pirouette::vision::MakeFloorSegmenter(
+      pirouette::vision::SegmentationMethod::kDefault, camera);
+  std::vector<cv::Mat1b> masks;
+  masks.reserve(frames.size());
+  for (const cv::Mat3b& frame : frames) masks.push_back(segmenter->Segment(frame));
+  std::size_t i = 0;
+  long hits = 0;
+  for (auto _ : state) {
+    const cv::Mat1b& mask = masks[i++ % masks.size()];
+    const auto profile = extractor_built_once
+                             ? extractor.Extract(mask)
+                             : pirouette::vision::ExtractProfile(mask, ipm, max_range_m);
+    hits += CountHits(profile);
+    benchmark::DoNotOptimize(profile);
+  }
+  state.counters["hits"] =
+      benchmark::Counter(static_cast<double>(hits), benchmark::Counter::kAvgIterations);
+}
+
 using pirouette::vision::SegmentationMethod;
 
 BENCHMARK_CAPTURE(PerceivePirouette, default_320x240, SegmentationMethod::kDefault, 320, 240)
@@ -168,6 +205,18 @@ BENCHMARK_CAPTURE(PerceivePirouette, paper_640x480, SegmentationMethod::kPaper, 
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(PerceiveOpenCv, 640x480, 640, 480)
     ->Name("perceive/opencv/640x480")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(ExtractProfiles, free_320x240, false, 320, 240)
+    ->Name("profile/extract-profile/320x240")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(ExtractProfiles, extractor_320x240, true, 320, 240)
+    ->Name("profile/profile-extractor/320x240")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(ExtractProfiles, free_640x480, false, 640, 480)
+    ->Name("profile/extract-profile/640x480")
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(ExtractProfiles, extractor_640x480, true, 640, 480)
+    ->Name("profile/profile-extractor/640x480")
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "pirouette/app/exploration.h"
@@ -46,6 +47,18 @@ TEST(ExplorationTest, MazeIsMappedCompletely) {
 
 TEST(ExplorationTest, FrontierBaselineMapsTheSoccerField) {
   ExpectExploredWithinBounds("soccer_field", PlannerKind::kFrontier);
+}
+
+TEST(ExplorationTest, ReturnHomeEndsWhereItStarted) {
+  const sim::World world = sim::LoadWorldFile(WorldPath("two_rooms"));
+  ExplorationOptions options;
+  options.return_home = true;
+  const ExplorationResult result = Explore(world, options);
+  EXPECT_EQ(result.status, "complete") << result.reason;
+  const core::Pose2& start = world.robot().start;
+  EXPECT_LT((result.final_true_pose.translation() - start.translation()).norm(), 0.02);
+  EXPECT_LT(std::abs(core::NormalizeAngle(result.final_true_pose.heading() - start.heading())),
+            0.02);
 }
 
 TEST(ExplorationTest, SameWorldAndSeedGiveTheSameMap) {

@@ -15,6 +15,7 @@
 #include "pirouette/app/map_evaluation.h"
 #include "pirouette/app/map_file.h"
 #include "pirouette/app/map_picture.h"
+#include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/sim/world_file.h"
 
@@ -87,6 +88,12 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
                          {"perceive", Round(result.times.perceive_s, 1e-4)},
                          {"update", Round(result.times.update_s, 1e-4)},
                          {"plan", Round(result.times.plan_s, 1e-4)}};
+  const auto pose_json = [](const core::Pose2& p) {
+    return nlohmann::json::array(
+        {Round(p.x(), 1e-4), Round(p.y(), 1e-4), Round(core::RadToDeg(p.heading()), 0.01)});
+  };
+  if (!result.path.empty()) run["final_pose"] = pose_json(result.path.back());
+  run["final_true_pose"] = pose_json(result.final_true_pose);
   run["blocked_looks"] = result.blocked_looks;
   run["backups"] = result.backups;
   run["eval"] = eval;

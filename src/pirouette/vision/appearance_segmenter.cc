@@ -1,38 +1,77 @@
 #include "pirouette/vision/appearance_segmenter.h"
 
 #include <algorithm>
-#include <cmath>
 #include <opencv2/imgproc.hpp>
+#include <utility>
+
+#include "pirouette/vision/binomial_blur.h"
+#include "pirouette/vision/mask_upsampler.h"
 
 namespace pirouette::vision {
+namespace {
+
+// The working grid's factor for frames `width` wide.
+int ScaleFor(int width, int working_width) {
+  return working_width > 0 ? std::max(1, width / working_width) : 1;
+}
+
+// Per colour bin, 1 where value >= threshold: a model's per-pixel test as a
+// table, looked up at each cell's bin.
+void PassTable(const std::vector<float>& value, float threshold, std::vector<std::uint8_t>& pass) {
+  pass.resize(value.size());
+  for (std::size_t i = 0; i < value.size(); ++i) pass[i] = value[i] >= threshold ? 1 : 0;
+}
+// Per colour bin, 1 where value >= factor · other: two models' test.
+void PassTable(const std::vector<float>& value, float factor, const std::vector<float>& other,
+               std::vector<std::uint8_t>& pass) {
+  pass.resize(value.size());
+  for (std::size_t i = 0; i < value.size(); ++i) pass[i] = value[i] >= factor * other[i] ? 1 : 0;
+}
+
+}  // namespace
 
 AppearanceSegmenter::AppearanceSegmenter(const std::optional<camera::CameraModel>& camera,
                                          const AppearanceSegmenterOptions& options)
-    : options_(options), colour_(options.colour) {
+    : options_(options),
+      has_camera_(camera.has_value()),
+      blur_order_(BinomialOrder(options.blur_sigma)),
+      grow_blur_order_(BinomialOrder(options.grow_blur_sigma)),
+      colour_(options.colour),
+      inside_(options.colour),
+      outside_(options.colour) {
   CV_Assert(options.blur_sigma >= 0.0 && options.texture_window >= 1 && options.close_size >= 0);
   CV_Assert(options.bootstrap_frames >= 0 && options.bootstrap_agreement >= 0.0 &&
             options.bootstrap_agreement <= 1.0);
-  if (camera) {
-    corrector_.emplace(*camera);
-    vertical_.emplace(*camera);
-  }
+  CV_Assert(options.working_width >= 0 && options.grow_blur_sigma >= 0.0 &&
+            options.grow_steps >= 0 && options.bottom_rows >= 0 && options.refine_passes >= 0);
+  if (options.close_size > 0) closer_.emplace(options.close_size);
+  if (camera) MakeGrid(cv::Size(camera->width(), camera->height()), camera);
 }
 
-cv::Mat1b AppearanceSegmenter::TextureBins(const cv::Mat1b& grey) const {
-  cv::Mat1f dx;
-  cv::Mat1f dy;
-  cv::Sobel(grey, dx, CV_32F, 1, 0, 3, 0.125);
-  cv::Sobel(grey, dy, CV_32F, 0, 1, 3, 0.125);
-  cv::Mat1f magnitude = cv::abs(dx) + cv::abs(dy);
-  cv::blur(magnitude, magnitude, cv::Size(options_.texture_window, options_.texture_window));
-  cv::Mat1b bins(grey.size());
-  for (int v = 0; v < grey.rows; ++v) {
-    for (int u = 0; u < grey.cols; ++u) {
-      const double bin = 3.0 * std::log2(1.0 + magnitude(v, u));
-      bins(v, u) = static_cast<std::uint8_t>(std::min<double>(kTextureBins - 1, bin));
-    }
+void AppearanceSegmenter::MakeGrid(cv::Size frame,
+                                   const std::optional<camera::CameraModel>& camera) {
+  Grid grid;
+  grid.scale = ScaleFor(frame.width, options_.working_width);
+  grid.frame = frame;
+  grid.cells = cv::Size(frame.width / grid.scale, frame.height / grid.scale);
+  std::optional<VignettingCorrector> full_corrector;
+  if (camera) {
+    corrector_.emplace(*camera, grid.scale);
+    full_corrector.emplace(*camera);
+    grid.edges.emplace(VerticalDirectionField(*camera, grid.scale), options_.edges);
+  } else {
+    grid.edges.emplace(VerticalDirectionField(grid.cells.width, grid.cells.height), options_.edges);
   }
-  return bins;
+  grid.texture.emplace(grid.scale, options_.texture_window, blur_order_, full_corrector);
+  grid.reference = ReferenceRegionMask(grid.cells, options_.reference);
+  grid.seeds = grid.reference.clone();
+  if (options_.bottom_rows > 0) {
+    const int from =
+        std::max(0, grid.cells.height - options_.reference.margin - options_.bottom_rows);
+    grid.seeds.rowRange(from, grid.cells.height).setTo(255);
+  }
+  grid_ = std::move(grid);
+  no_barrier_ = cv::Mat1b(grid_.cells, std::uint8_t{0});
 }
 
 std::optional<AppearanceSegmenter::TextureHistogram> AppearanceSegmenter::HistogramOf(
@@ -74,7 +113,7 @@ void AppearanceSegmenter::LearnTexture(const TextureHistogram& frame) {
   }
 }
 
-void AppearanceSegmenter::Bootstrap(const cv::Mat3b& blurred, const cv::Mat1b& texture,
+void AppearanceSegmenter::Bootstrap(const cv::Mat1w& colour_bins, const cv::Mat1b& texture,
                                     const cv::Mat1b& reference) {
   if (frames_seen_ >= options_.bootstrap_frames) {
     samples_.clear();
@@ -83,7 +122,7 @@ void AppearanceSegmenter::Bootstrap(const cv::Mat3b& blurred, const cv::Mat1b& t
   }
   ++frames_seen_;
   ReferenceSample sample{
-      FloorColourModel::Histogram(blurred, reference), {}, FloorColourModel(options_.colour)};
+      FloorColourModel::Histogram(colour_bins, reference), {}, FloorColourModel(options_.colour)};
   const auto texture_histogram = HistogramOf(texture, reference);
   if (sample.colour.empty() || !texture_histogram) return;
   sample.texture = *texture_histogram;
@@ -131,110 +170,105 @@ void AppearanceSegmenter::Bootstrap(const cv::Mat3b& blurred, const cv::Mat1b& t
       texture_mean[b] += samples_[j].texture[b] / members;
     }
   }
-  colour_ = FloorColourModel(options_.colour);
-  colour_.Learn(colour);
+  colour_.Relearn(colour);
   texture_learnt_ = false;
   LearnTexture(texture_mean);
 }
 
 cv::Mat1b AppearanceSegmenter::Segment(const cv::Mat3b& bgr_raw) {
-  const cv::Mat3b corrected = PrepareFrame(bgr_raw, corrector_, vertical_, 0.0);
-  cv::Mat3b blurred;
-  if (options_.blur_sigma > 0.0) {
-    cv::GaussianBlur(corrected, blurred, cv::Size(), options_.blur_sigma);
-  } else {
-    blurred = corrected;
+  CV_Assert(!bgr_raw.empty());
+  if (has_camera_) {
+    CV_Assert(bgr_raw.size() == grid_.frame);
+  } else if (bgr_raw.size() != grid_.frame) {
+    MakeGrid(bgr_raw.size(), std::nullopt);
   }
-  cv::Mat1b grey;
-  cv::cvtColor(blurred, grey, cv::COLOR_BGR2GRAY);
-  const cv::Mat1b texture = TextureBins(grey);
+  const int scale = grid_.scale;
 
-  const cv::Mat1b reference = ReferenceRegionMask(bgr_raw.size(), options_.reference);
-  Bootstrap(blurred, texture, reference);
-  if (!colour_.learnt()) colour_.Learn(blurred, reference);
+  // The frame on the grid: reduced and corrected (a view of the frame when
+  // there is nothing to do: the buffers never alias the caller's frame).
+  if (corrector_) {
+    corrector_->ReduceAndApply(bgr_raw, corrected_);
+  } else if (scale > 1) {
+    ReduceByBlockMean(bgr_raw, scale, corrected_);
+  }
+  const cv::Mat3b& corrected = corrector_ || scale > 1 ? corrected_ : bgr_raw;
+  BinomialBlur(corrected, blurred_, blur_order_);
+  BinomialBlur(corrected, fine_, grow_blur_order_);
+  FloorColourModel::Bins(blurred_, bins_);
+  FloorColourModel::Bins(fine_, fine_bins_);
+  if (options_.use_edges) grid_.edges->Find(blurred_);
+  const cv::Mat1b& texture = grid_.texture->Bins(bgr_raw);
+  const cv::Mat1b& reference = grid_.reference;
+
+  Bootstrap(bins_, texture, reference);
+  if (!colour_.learnt()) colour_.Learn(FloorColourModel::Histogram(bins_, reference));
   if (!texture_learnt_) LearnTexture(texture, reference);
 
-  cv::Mat1b texture_ok(bgr_raw.size());
+  texture_ok_.create(grid_.cells);
+  std::array<std::uint8_t, kTextureBins> texture_pass{};
+  for (int i = 0; i < kTextureBins; ++i) {
+    texture_pass[i] = texture_likelihood_[i] >= options_.texture_threshold ? 255 : 0;
+  }
   for (int v = 0; v < texture.rows; ++v) {
-    for (int u = 0; u < texture.cols; ++u) {
-      texture_ok(v, u) = texture_likelihood_[texture(v, u)] >= options_.texture_threshold ? 255 : 0;
-    }
+    const std::uint8_t* t = texture[v];
+    std::uint8_t* ok = texture_ok_[v];
+    for (int u = 0; u < texture.cols; ++u) ok[u] = texture_pass[t[u]];
   }
-  cv::Mat1b barrier(bgr_raw.size(), std::uint8_t{0});
-  if (options_.use_edges) {
-    const EdgeMap edges = FindEdges(blurred, *vertical_, options_.edges);
-    barrier = edges.edges & ~edges.vertical;
-  }
-  cv::Mat3b fine;
-  cv::GaussianBlur(corrected, fine, cv::Size(), options_.grow_blur_sigma);
-
-  // The floor from a colour test (which pixels of `blurred`, and of `fine`,
-  // have a floor colour): floor-coloured, floor-textured pixels off the
-  // barrier, the components touching the reference region, closed, and grown
-  // back to the edges.
-  const int bottom_rows_from = options_.bottom_rows > 0
-                                   ? bgr_raw.rows - options_.reference.margin - options_.bottom_rows
-                                   : bgr_raw.rows;
-  auto floor_from = [&](const cv::Mat1b& colour_ok, const cv::Mat1b& fine_colour_ok) {
-    const cv::Mat1b candidate = colour_ok & texture_ok & ~barrier;
-    cv::Mat1i labels;
-    const int count = cv::connectedComponents(candidate, labels, 4, CV_32S);
-    std::vector<std::uint8_t> keep(static_cast<std::size_t>(count), 0);
-    for (int v = 0; v < labels.rows; ++v) {
-      for (int u = 0; u < labels.cols; ++u) {
-        if ((reference(v, u) != 0 || v >= bottom_rows_from) && candidate(v, u) != 0) {
-          keep[labels(v, u)] = 1;
-        }
-      }
-    }
-    cv::Mat1b floor(bgr_raw.size(), std::uint8_t{0});
-    for (int v = 0; v < labels.rows; ++v) {
-      for (int u = 0; u < labels.cols; ++u) {
-        if (keep[labels(v, u)] != 0) floor(v, u) = 255;
-      }
-    }
-    if (options_.close_size > 0) {
-      cv::morphologyEx(floor, floor, cv::MORPH_CLOSE,
-                       cv::getStructuringElement(
-                           cv::MORPH_ELLIPSE, cv::Size(options_.close_size, options_.close_size)));
-    }
-    const cv::Mat1b allowed = fine_colour_ok & ~barrier;
-    const cv::Mat cross = cv::getStructuringElement(cv::MORPH_CROSS, cv::Size(3, 3));
-    for (int step = 0; step < options_.grow_steps; ++step) {
-      cv::Mat1b grown;
-      cv::dilate(floor, grown, cross);
-      floor |= grown & allowed;
-    }
-    // Canny's edge pixel may be the floor's last one: it joins the floor
-    // where its colour is the floor's (the floor does not grow on past it).
-    cv::Mat1b grown;
-    cv::dilate(floor, grown, cross);
-    floor |= grown & barrier & fine_colour_ok;
-    return floor;
-  };
 
   const auto threshold = static_cast<float>(options_.colour_threshold);
-  cv::Mat1b floor =
-      floor_from(colour_.Likelihood(blurred) >= threshold, colour_.Likelihood(fine) >= threshold);
+  PassTable(colour_.likelihoods(), threshold, pass_);
+  FloorFrom(pass_);
   for (int pass = 0; pass < options_.refine_passes; ++pass) {
     // A two-class refinement within the frame: the colours of the floor just
     // found against those of the rest; a pixel is floor-coloured where the
     // floor's colour density is at least refine_ratio times the rest's.
-    FloorColourModel inside(options_.colour);
-    FloorColourModel outside(options_.colour);
-    inside.Learn(blurred, floor);
-    outside.Learn(blurred, ~floor);
-    if (!inside.learnt() || !outside.learnt()) break;
-    const auto ratio = static_cast<float>(options_.refine_ratio);
-    const cv::Mat1b colour_ok = inside.Density(blurred) >= ratio * outside.Density(blurred);
-    const cv::Mat1b fine_ok = inside.Density(fine) >= ratio * outside.Density(fine);
-    floor = floor_from(colour_ok, fine_ok);
+    const auto [inside, outside] = FloorColourModel::Histograms(bins_, floor_);
+    if (inside.empty() || outside.empty()) break;
+    inside_.Relearn(inside);
+    outside_.Relearn(outside);
+    PassTable(inside_.densities(), static_cast<float>(options_.refine_ratio), outside_.densities(),
+              pass_);
+    FloorFrom(pass_);
   }
 
-  const cv::Mat1b learn_region = reference & floor;
-  colour_.Learn(blurred, learn_region);
-  LearnTexture(texture, learn_region);
-  return floor;
+  learn_region_.create(grid_.cells);
+  cv::bitwise_and(reference, floor_, learn_region_);
+  colour_.Learn(FloorColourModel::Histogram(bins_, learn_region_));
+  LearnTexture(texture, learn_region_);
+  if (scale == 1) return floor_.clone();
+  return UpsampleFloorMask(floor_, corrected, bgr_raw, scale, corrector_);
+}
+
+void AppearanceSegmenter::FloorFrom(const std::vector<std::uint8_t>& pass) {
+  // The floor from a colour test (which cells of `blurred_`, and of `fine_`,
+  // have a floor colour): floor-coloured, floor-textured cells off the
+  // barrier, the components touching the reference region (or the bottom
+  // rows), closed, and grown back to the edges.
+  const cv::Mat1b& barrier = options_.use_edges ? grid_.edges->barrier() : no_barrier_;
+  candidate_.create(grid_.cells);
+  allowed_.create(grid_.cells);
+  edge_allowed_.create(grid_.cells);
+  for (int v = 0; v < grid_.cells.height; ++v) {
+    const std::uint16_t* b = bins_[v];
+    const std::uint16_t* fb = fine_bins_[v];
+    const std::uint8_t* t = texture_ok_[v];
+    const std::uint8_t* bar = barrier[v];
+    std::uint8_t* c = candidate_[v];
+    std::uint8_t* a = allowed_[v];
+    std::uint8_t* e = edge_allowed_[v];
+    for (int u = 0; u < grid_.cells.width; ++u) {
+      const std::uint8_t fine_ok = pass[fb[u]] != 0 ? 255 : 0;
+      c[u] = pass[b[u]] != 0 ? static_cast<std::uint8_t>(t[u] & ~bar[u]) : 0;
+      a[u] = static_cast<std::uint8_t>(fine_ok & ~bar[u]);
+      // Canny's edge pixel may be the floor's last one: it joins the floor
+      // where its colour is the floor's (the floor does not grow on past it).
+      e[u] = static_cast<std::uint8_t>(fine_ok & bar[u]);
+    }
+  }
+  FillFromSeeds(candidate_, grid_.seeds, floor_);
+  if (closer_) closer_->Close(floor_);
+  grower_.Grow(floor_, allowed_, options_.grow_steps);
+  grower_.Grow(floor_, edge_allowed_, 1);
 }
 
 }  // namespace pirouette::vision

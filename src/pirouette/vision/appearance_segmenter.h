@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -8,13 +9,22 @@
 #include "pirouette/vision/edge_map.h"
 #include "pirouette/vision/floor_colour_model.h"
 #include "pirouette/vision/floor_segmenter.h"
+#include "pirouette/vision/mask_morphology.h"
+#include "pirouette/vision/texture_feature.h"
 #include "pirouette/vision/vertical_direction_field.h"
 #include "pirouette/vision/vignetting_corrector.h"
 
 namespace pirouette::vision {
 
 struct AppearanceSegmenterOptions {
-  double blur_sigma = 1.0;  // the Gaussian low-pass, pixels
+  // The segmenter works on the frame reduced by the integer factor
+  // s = max(1, width / working_width), each cell the mean of s × s pixels: the
+  // pixel sizes below (in cells, then) were tuned on 160×120 photos, and most
+  // of the work then scales with the cells, not the pixels. The texture is measured at full
+  // resolution, and the floor's boundary is placed to the pixel at the end
+  // (UpsampleFloorMask). 0: the frame's own resolution.
+  int working_width = 160;
+  double blur_sigma = 1.0;  // the Gaussian low-pass, pixels (a binomial kernel: BinomialOrder)
   FloorColourModelOptions colour;
   // Tuned on photos 0–69: wide at the bottom, narrow at its top.
   ReferenceRegion reference{0.2, 0.6, 0.15, 2};
@@ -22,7 +32,8 @@ struct AppearanceSegmenterOptions {
   double colour_threshold = 0.1;
   // ...and the texture histogram's likelihood is at least this.
   double texture_threshold = 0.1;
-  int texture_window = 5;  // the side of the window the texture feature averages over
+  // The side of the window the texture feature averages over (TextureFeature).
+  int texture_window = 5;
   // Whether the non-vertical Canny edges bound the floor (they stop the
   // connected component as they stop the paper's fill).
   bool use_edges = true;
@@ -59,8 +70,8 @@ struct AppearanceSegmenterOptions {
 // learnt online from a trapezoid in front of the robot (the reference region)
 // and a pixel is floor where its appearance is common there. Appearance is
 // colour (FloorColourModel: L*a*b* histogram) and a simple texture feature
-// (the local mean gradient magnitude, histogrammed on a log scale); both must
-// be common. The candidate floor is cut by the non-vertical Canny edges, as in
+// (TextureFeature: the local mean gradient magnitude, histogrammed on a log
+// scale); both must be common. The candidate floor is cut by the non-vertical Canny edges, as in
 // the paper (near-vertical edges, the sides of obstacles, do not cut it: they
 // are left out of the boundary), and the floor is the part connected to the
 // reference region or to the bottom rows, closed and grown back to the edges. A refinement pass
@@ -72,6 +83,15 @@ struct AppearanceSegmenterOptions {
 // obstacle (a wall a few cm away), so over the first pirouette the model
 // follows the appearance most reference regions agree on, the majority vote of
 // the paper's assumption that the reference region is floor.
+//
+// Speed: all the steps above run on the working grid (options.working_width:
+// 160×120 cells for 320×240 and 640×480 frames), with the texture measured at
+// full resolution and the boundary placed to the pixel (UpsampleFloorMask);
+// each cell's colour is binned once a frame and each colour test is a look-up
+// of its bin in a per-bin table rebuilt when a model changes; the components,
+// closing and growth (mask_morphology.h) touch only the pixels they change;
+// the buffers are kept from frame to frame. On the 160×120 photos (no camera)
+// the grid is the photo itself.
 class AppearanceSegmenter : public FloorSegmenter {
  public:
   AppearanceSegmenter(const std::optional<camera::CameraModel>& camera,
@@ -82,10 +102,21 @@ class AppearanceSegmenter : public FloorSegmenter {
   const FloorColourModel& colour_model() const { return colour_; }
 
  private:
-  static constexpr int kTextureBins = 16;
-
-  cv::Mat1b TextureBins(const cv::Mat1b& grey) const;
+  static constexpr int kTextureBins = TextureFeature::kBins;
   using TextureHistogram = std::array<double, kTextureBins>;
+
+  // What depends on the frame's size: the working grid and its helpers.
+  struct Grid {
+    int scale = 1;
+    cv::Size frame;
+    cv::Size cells;
+    std::optional<EdgeDetector> edges;
+    std::optional<TextureFeature> texture;
+    cv::Mat1b reference;  // the reference region's mask, on the grid
+    cv::Mat1b seeds;      // where floor components may start: reference or bottom rows
+  };
+  void MakeGrid(cv::Size frame, const std::optional<camera::CameraModel>& camera);
+
   // The normalised histogram of `bins` in `region`; nullopt when it is empty.
   static std::optional<TextureHistogram> HistogramOf(const cv::Mat1b& bins,
                                                      const cv::Mat1b& region);
@@ -93,7 +124,12 @@ class AppearanceSegmenter : public FloorSegmenter {
   void LearnTexture(const TextureHistogram& frame);
   // Keeps the reference region's appearance during the first pirouette and
   // relearns the model when most regions so far agree on another appearance.
-  void Bootstrap(const cv::Mat3b& blurred, const cv::Mat1b& texture, const cv::Mat1b& reference);
+  void Bootstrap(const cv::Mat1w& colour_bins, const cv::Mat1b& texture,
+                 const cv::Mat1b& reference);
+  // The floor from a per-bin colour test (`pass`: 1 where a bin's colour may
+  // be floor) of the low-passed cells and of the finely low-passed ones, into
+  // floor_ (see Segment).
+  void FloorFrom(const std::vector<std::uint8_t>& pass);
 
   // One reference region's appearance, kept while bootstrapping.
   struct ReferenceSample {
@@ -103,15 +139,37 @@ class AppearanceSegmenter : public FloorSegmenter {
   };
 
   AppearanceSegmenterOptions options_;
-  std::optional<VignettingCorrector> corrector_;
-  std::optional<VerticalDirectionField> vertical_;
+  bool has_camera_;  // frames then have the camera's size, and a fixed grid
+  std::optional<VignettingCorrector> corrector_;  // on the grid
+  int blur_order_;
+  int grow_blur_order_;
+  Grid grid_;
   FloorColourModel colour_;
+  FloorColourModel inside_;  // the refinement's two classes
+  FloorColourModel outside_;
   bool texture_learnt_ = false;
   std::array<double, kTextureBins> texture_histogram_{};
   std::array<float, kTextureBins> texture_likelihood_{};
   int frames_seen_ = 0;
   std::vector<ReferenceSample> samples_;      // while bootstrapping
   std::vector<std::vector<bool>> agreement_;  // agreement_[i][j]: samples i and j agree
+
+  // Buffers kept from frame to frame, all on the grid.
+  cv::Mat3b corrected_;  // the frame reduced and corrected for vignetting
+  cv::Mat blurred_;      // ...low-passed (blur_sigma)
+  cv::Mat fine_;         // ...low-passed (grow_blur_sigma)
+  cv::Mat1w bins_;       // FloorColourModel bins of blurred_
+  cv::Mat1w fine_bins_;  // ...and of fine_
+  cv::Mat1b texture_ok_;
+  cv::Mat1b no_barrier_;  // all zeros: the barrier without edges
+  cv::Mat1b candidate_;
+  cv::Mat1b allowed_;
+  cv::Mat1b edge_allowed_;
+  cv::Mat1b floor_;
+  cv::Mat1b learn_region_;
+  std::vector<std::uint8_t> pass_;  // per colour bin: passes the colour test
+  std::optional<MaskCloser> closer_;
+  MaskGrower grower_;
 };
 
 }  // namespace pirouette::vision

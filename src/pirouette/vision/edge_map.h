@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstdint>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "pirouette/vision/vertical_direction_field.h"
 
@@ -28,5 +30,32 @@ struct EdgeMap {
 // |gradient · vertical| <= |gradient| · sin(tolerance).
 EdgeMap FindEdges(const cv::Mat3b& bgr, const VerticalDirectionField& vertical,
                   const EdgeMapOptions& options);
+
+// FindEdges for a stream of frames of the field's size, keeping its buffers
+// from frame to frame; it also gives the barrier the segmenters use.
+class EdgeDetector {
+ public:
+  EdgeDetector(VerticalDirectionField vertical, const EdgeMapOptions& options);
+
+  const VerticalDirectionField& vertical() const { return vertical_; }
+
+  // The edges of `bgr`, as FindEdges finds them; valid until the next call.
+  const EdgeMap& Find(const cv::Mat3b& bgr);
+  // The edges of the last Find (empty images before the first).
+  const EdgeMap& edges() const { return map_; }
+  // The edge pixels of the last Find that are not vertical (255): those that
+  // bound the floor.
+  const cv::Mat1b& barrier() const { return barrier_; }
+
+ private:
+  VerticalDirectionField vertical_;
+  EdgeMapOptions options_;
+  float sin_tolerance_;
+  cv::Mat1s dx_;  // the gradient of the strongest channel
+  cv::Mat1s dy_;
+  std::vector<std::int16_t> rows_;  // per-row scratch of the Sobel sums
+  EdgeMap map_;
+  cv::Mat1b barrier_;
+};
 
 }  // namespace pirouette::vision

@@ -43,26 +43,44 @@ const std::vector<std::uint16_t>& BinTable() {
   return table;
 }
 
-// One [1 2 1] / 4 pass along each axis of the L × C × C histogram, edges clamped.
-std::vector<double> Smooth(const std::vector<double>& h) {
-  std::vector<double> out = h;
-  const std::array<int, 3> sizes = {kL, kC, kC};
-  const std::array<int, 3> strides = {kC * kC, kC, 1};
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::vector<double> in = out;
-    for (int l = 0; l < kL; ++l) {
-      for (int a = 0; a < kC; ++a) {
-        for (int b = 0; b < kC; ++b) {
-          const std::array<int, 3> at = {l, a, b};
-          const int i = Index(l, a, b);
-          const int lo = at[axis] > 0 ? i - strides[axis] : i;
-          const int hi = at[axis] < sizes[axis] - 1 ? i + strides[axis] : i;
-          out[i] = 0.25 * in[lo] + 0.5 * in[i] + 0.25 * in[hi];
-        }
-      }
+// One [1 2 1] / 4 pass along one axis of the L × C × C histogram, edges
+// clamped: `count` blocks of `size` steps of `stride` values.
+void SmoothAxis(const double* in, double* out, int count, int size, int stride) {
+  for (int block = 0; block < count; ++block) {
+    const std::ptrdiff_t base = static_cast<std::ptrdiff_t>(block) * size * stride;
+    for (int k = 0; k < size; ++k) {
+      const double* lo = in + base + static_cast<std::ptrdiff_t>(k > 0 ? k - 1 : k) * stride;
+      const double* at = in + base + static_cast<std::ptrdiff_t>(k) * stride;
+      const double* hi = in + base + static_cast<std::ptrdiff_t>(k < size - 1 ? k + 1 : k) * stride;
+      double* o = out + base + static_cast<std::ptrdiff_t>(k) * stride;
+      for (int j = 0; j < stride; ++j) o[j] = 0.25 * lo[j] + 0.5 * at[j] + 0.25 * hi[j];
     }
   }
-  return out;
+}
+
+// One [1 2 1] / 4 pass along each axis (L, then a*, then b*) of `h`, in
+// place; `scratch` holds kBins values.
+void Smooth(std::vector<double>& h, std::vector<double>& scratch) {
+  SmoothAxis(h.data(), scratch.data(), 1, kL, kC * kC);
+  SmoothAxis(scratch.data(), h.data(), kL, kC, kC);
+  // Along b* (stride 1): the rows of kC values, their interiors at once.
+  const double* in = h.data();
+  double* out = scratch.data();
+  for (int row = 0; row < kL * kC; ++row, in += kC, out += kC) {
+    out[0] = 0.25 * in[0] + 0.5 * in[0] + 0.25 * in[1];
+    for (int k = 1; k < kC - 1; ++k) out[k] = 0.25 * in[k - 1] + 0.5 * in[k] + 0.25 * in[k + 1];
+    out[kC - 1] = 0.25 * in[kC - 2] + 0.5 * in[kC - 1] + 0.25 * in[kC - 1];
+  }
+  h.swap(scratch);
+}
+
+// The normalised histogram of counts over `total` pixels; empty when none.
+std::vector<double> Normalised(const std::vector<std::uint32_t>& counts, std::uint64_t total) {
+  if (total == 0) return {};
+  std::vector<double> frame(counts.size());
+  const auto n = static_cast<double>(total);
+  for (std::size_t i = 0; i < counts.size(); ++i) frame[i] = counts[i] / n;
+  return frame;
 }
 
 }  // namespace
@@ -77,22 +95,87 @@ int FloorColourModel::Bin(const cv::Vec3b& bgr) {
   return BinTable()[((bgr[0] >> 3) << 10) | ((bgr[1] >> 3) << 5) | (bgr[2] >> 3)];
 }
 
+void FloorColourModel::Bins(const cv::Mat3b& bgr, cv::Mat1w& bins) {
+  bins.create(bgr.size());
+  const std::uint16_t* table = BinTable().data();
+  for (int v = 0; v < bgr.rows; ++v) {
+    const auto* p = bgr.ptr<std::uint8_t>(v);
+    std::uint16_t* b = bins[v];
+    for (int u = 0; u < bgr.cols; ++u, p += 3) {
+      b[u] = table[((p[0] >> 3) << 10) | ((p[1] >> 3) << 5) | (p[2] >> 3)];
+    }
+  }
+}
+
 std::vector<double> FloorColourModel::Histogram(const cv::Mat3b& bgr, const cv::Mat1b& region) {
   CV_Assert(bgr.size() == region.size());
-  std::vector<double> frame(kBins, 0.0);
-  double count = 0.0;
+  std::vector<std::uint32_t> counts(kBins, 0);
+  std::uint64_t total = 0;
   for (int v = 0; v < bgr.rows; ++v) {
     const cv::Vec3b* p = bgr[v];
     const std::uint8_t* m = region[v];
     for (int u = 0; u < bgr.cols; ++u) {
       if (m[u] == 0) continue;
-      frame[Bin(p[u])] += 1.0;
-      count += 1.0;
+      ++counts[Bin(p[u])];
+      ++total;
     }
   }
-  if (count == 0.0) return {};
-  for (double& h : frame) h /= count;
-  return frame;
+  return Normalised(counts, total);
+}
+
+std::vector<double> FloorColourModel::Histogram(const cv::Mat1w& bins, const cv::Mat1b& region) {
+  CV_Assert(bins.size() == region.size());
+  std::vector<std::uint32_t> counts(kBins, 0);
+  std::uint64_t total = 0;
+  for (int v = 0; v < bins.rows; ++v) {
+    const std::uint16_t* b = bins[v];
+    const std::uint8_t* m = region[v];
+    // Neighbours share a bin more often than not: count runs, not pixels.
+    int run_bin = -1;
+    std::uint32_t run = 0;
+    for (int u = 0; u < bins.cols; ++u) {
+      if (m[u] == 0) continue;
+      if (b[u] != run_bin) {
+        if (run > 0) counts[run_bin] += run;
+        total += run;
+        run_bin = b[u];
+        run = 0;
+      }
+      ++run;
+    }
+    if (run > 0) counts[run_bin] += run;
+    total += run;
+  }
+  return Normalised(counts, total);
+}
+
+std::array<std::vector<double>, 2> FloorColourModel::Histograms(const cv::Mat1w& bins,
+                                                                const cv::Mat1b& region) {
+  CV_Assert(bins.size() == region.size());
+  std::array<std::vector<std::uint32_t>, 2> counts = {std::vector<std::uint32_t>(kBins, 0),
+                                                      std::vector<std::uint32_t>(kBins, 0)};
+  std::uint64_t inside = 0;
+  for (int v = 0; v < bins.rows; ++v) {
+    const std::uint16_t* b = bins[v];
+    const std::uint8_t* m = region[v];
+    int run_bin = b[0];
+    int run_class = m[0] != 0 ? 1 : 0;
+    std::uint32_t run = 0;
+    for (int u = 0; u < bins.cols; ++u) {
+      const int k = m[u] != 0 ? 1 : 0;
+      inside += static_cast<std::uint64_t>(k);
+      if (b[u] != run_bin || k != run_class) {
+        counts[run_class][run_bin] += run;
+        run_bin = b[u];
+        run_class = k;
+        run = 0;
+      }
+      ++run;
+    }
+    counts[run_class][run_bin] += run;
+  }
+  const auto all = static_cast<std::uint64_t>(bins.total());
+  return {Normalised(counts[1], inside), Normalised(counts[0], all - inside)};
 }
 
 void FloorColourModel::Learn(const cv::Mat3b& bgr, const cv::Mat1b& region) {
@@ -110,6 +193,12 @@ void FloorColourModel::Learn(const std::vector<double>& histogram) {
   UpdateLikelihood();
 }
 
+void FloorColourModel::Relearn(const std::vector<double>& histogram) {
+  if (histogram.empty()) return;
+  learnt_ = false;
+  Learn(histogram);
+}
+
 double FloorColourModel::Coverage(const std::vector<double>& histogram, float threshold) const {
   if (!learnt_ || histogram.empty()) return 0.0;
   CV_Assert(histogram.size() == static_cast<std::size_t>(kBins));
@@ -121,8 +210,10 @@ double FloorColourModel::Coverage(const std::vector<double>& histogram, float th
 }
 
 void FloorColourModel::UpdateLikelihood() {
-  std::vector<double> smoothed = histogram_;
-  for (int pass = 0; pass < options_.smoothing_passes; ++pass) smoothed = Smooth(smoothed);
+  std::vector<double>& smoothed = smoothed_;
+  smoothed = histogram_;
+  scratch_.resize(kBins);
+  for (int pass = 0; pass < options_.smoothing_passes; ++pass) Smooth(smoothed, scratch_);
   const double peak = *std::max_element(smoothed.begin(), smoothed.end());
   for (int i = 0; i < kBins; ++i) {
     density_[i] = static_cast<float>(smoothed[i]);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -40,9 +41,19 @@ class FloorColourModel {
   // Learn does the region's; an empty histogram leaves the model as it was.
   void Learn(const std::vector<double>& histogram);
 
+  // Learns `histogram` (as Learn does) as a model that has learnt nothing yet
+  // would: what was learnt before is forgotten, the storage is kept.
+  void Relearn(const std::vector<double>& histogram);
+
   // The normalised colour histogram of `bgr` where `region` is non-zero (same
   // size), kBins values summing to 1; empty when the region has no pixel.
   static std::vector<double> Histogram(const cv::Mat3b& bgr, const cv::Mat1b& region);
+  // The same from the pixels' bins (as Bins gives them).
+  static std::vector<double> Histogram(const cv::Mat1w& bins, const cv::Mat1b& region);
+  // The histograms of the pixels where `region` is non-zero and of those where
+  // it is zero, in one pass: {Histogram(bins, region), Histogram(bins, ~region)}.
+  static std::array<std::vector<double>, 2> Histograms(const cv::Mat1w& bins,
+                                                       const cv::Mat1b& region);
 
   // The share of a histogram's mass (as Histogram returns it) in bins whose
   // likelihood is at least `threshold`: how much of a region this model would
@@ -58,8 +69,18 @@ class FloorColourModel {
   // bins that sums to 1 (0 before anything is learnt), to compare two models.
   cv::Mat1f Density(const cv::Mat3b& bgr) const;
 
+  // Likelihood and Density of each bin (kBins values each): the per-pixel
+  // functions are these at Bin(pixel), so a frame's bins (Bins) can be looked
+  // up in them, or in tables derived from them, once per test.
+  const std::vector<float>& likelihoods() const { return likelihood_; }
+  const std::vector<float>& densities() const { return density_; }
+
   // The histogram bin of a BGR colour (a lookup on its 5 high bits per channel).
   static int Bin(const cv::Vec3b& bgr);
+  // Bin of each pixel of `bgr`, so that the colour of a frame is converted
+  // once for all the tests on it. `bins` is (re)allocated to bgr's size unless
+  // it has it already.
+  static void Bins(const cv::Mat3b& bgr, cv::Mat1w& bins);
 
  private:
   void UpdateLikelihood();
@@ -69,6 +90,8 @@ class FloorColourModel {
   std::vector<double> histogram_;  // normalised: sums to 1 once learnt
   std::vector<float> density_;     // smoothed histogram
   std::vector<float> likelihood_;  // smoothed histogram / its maximum
+  std::vector<double> smoothed_;   // scratch of UpdateLikelihood
+  std::vector<double> scratch_;
 };
 
 }  // namespace pirouette::vision

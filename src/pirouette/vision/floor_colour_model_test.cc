@@ -81,5 +81,39 @@ TEST(FloorColourModelTest, EmptyRegionChangesNothing) {
   EXPECT_LT(model.Likelihood(kRed), 0.01f);
 }
 
+TEST(FloorColourModelTest, BinsAndHistogramsFromBinsAgreeWithThePixels) {
+  cv::Mat3b image(12, 17);
+  cv::RNG rng(5);
+  rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat1b region(image.size(), std::uint8_t{0});
+  region(cv::Rect(3, 2, 9, 7)).setTo(255);
+  cv::Mat1w bins;
+  FloorColourModel::Bins(image, bins);
+  ASSERT_EQ(bins.size(), image.size());
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) EXPECT_EQ(bins(v, u), FloorColourModel::Bin(image(v, u)));
+  }
+  EXPECT_EQ(FloorColourModel::Histogram(bins, region), FloorColourModel::Histogram(image, region));
+  const auto [inside, outside] = FloorColourModel::Histograms(bins, region);
+  EXPECT_EQ(inside, FloorColourModel::Histogram(image, region));
+  EXPECT_EQ(outside, FloorColourModel::Histogram(image, ~region));
+  const auto [all, none] = FloorColourModel::Histograms(bins, cv::Mat1b(image.size(), uchar{255}));
+  EXPECT_FALSE(all.empty());
+  EXPECT_TRUE(none.empty());
+}
+
+TEST(FloorColourModelTest, RelearningIsLearningAfresh) {
+  const cv::Mat1b all(8, 8, std::uint8_t{255});
+  FloorColourModel model;
+  model.Learn(cv::Mat3b(8, 8, kBeige), all);
+  model.Relearn(FloorColourModel::Histogram(cv::Mat3b(8, 8, kBlue), all));
+  FloorColourModel fresh;
+  fresh.Learn(cv::Mat3b(8, 8, kBlue), all);
+  EXPECT_EQ(model.histogram(), fresh.histogram());
+  EXPECT_EQ(model.likelihoods(), fresh.likelihoods());
+  EXPECT_EQ(model.densities(), fresh.densities());
+  EXPECT_EQ(model.Likelihood(kBeige), 0.0f);
+}
+
 }  // namespace
 }  // namespace pirouette::vision

@@ -62,7 +62,7 @@ cv::Mat3b PrepareFrame(const cv::Mat3b& bgr_raw,
   } else if (!vertical || vertical->width() != bgr_raw.cols || vertical->height() != bgr_raw.rows) {
     vertical.emplace(bgr_raw.cols, bgr_raw.rows);
   }
-  const cv::Mat3b corrected = corrector ? corrector->Apply(bgr_raw) : bgr_raw;
+  cv::Mat3b corrected = corrector ? corrector->Apply(bgr_raw) : bgr_raw;
   if (blur_sigma <= 0.0) return corrected;
   cv::Mat3b blurred;
   cv::GaussianBlur(corrected, blurred, cv::Size(), blur_sigma);

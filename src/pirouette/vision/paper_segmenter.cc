@@ -15,12 +15,20 @@ PaperSegmenter::PaperSegmenter(const std::optional<camera::CameraModel>& camera,
   }
 }
 
+const EdgeMap& PaperSegmenter::last_edges() const {
+  static const EdgeMap kNone;
+  return edges_ ? edges_->edges() : kNone;
+}
+
 cv::Mat1b PaperSegmenter::Segment(const cv::Mat3b& bgr_raw) {
   const cv::Mat3b blurred = PrepareFrame(bgr_raw, corrector_, vertical_, options_.blur_sigma);
-  last_edges_ = FindEdges(blurred, *vertical_, options_.edges);
+  if (!edges_ || edges_->vertical().directions().data != vertical_->directions().data) {
+    edges_.emplace(*vertical_, options_.edges);
+  }
+  const EdgeMap& edges = edges_->Find(blurred);
 
   // The barrier: the edges that are not vertical in the world.
-  const cv::Mat1b barrier = last_edges_.edges & ~last_edges_.vertical;
+  const cv::Mat1b& barrier = edges_->barrier();
 
   const cv::Mat1b reference = ReferenceRegionMask(bgr_raw.size(), options_.reference);
   if (!colour_.learnt()) colour_.Learn(blurred, reference);
@@ -36,7 +44,7 @@ cv::Mat1b PaperSegmenter::Segment(const cv::Mat3b& bgr_raw) {
        --v) {
     for (int offset = 0; offset <= width / 2 && !seed; ++offset) {
       for (const int u : {centre - offset, centre + offset}) {
-        if (u < 0 || u >= width || last_edges_.edges(v, u) != 0) continue;
+        if (u < 0 || u >= width || edges.edges(v, u) != 0) continue;
         if (colour_.Likelihood(blurred(v, u)) >= options_.seed_likelihood) {
           seed = cv::Point(u, v);
           break;
@@ -53,7 +61,7 @@ cv::Mat1b PaperSegmenter::Segment(const cv::Mat3b& bgr_raw) {
     for (int v = seed->y; v >= 0 && barrier(v, u) == 0; --v) floor(v, u) = 255;
     for (int v = seed->y + 1; v < height && barrier(v, u) == 0; ++v) floor(v, u) = 255;
   };
-  const cv::Mat1b& any_edge = last_edges_.edges;
+  const cv::Mat1b& any_edge = edges.edges;
   for (int u = seed->x; u < width && any_edge(seed->y, u) == 0; ++u) fill_column(u);
   for (int u = seed->x - 1; u >= 0 && any_edge(seed->y, u) == 0; --u) fill_column(u);
 

@@ -52,15 +52,16 @@ class PaperSegmenter : public FloorSegmenter {
   cv::Mat1b Segment(const cv::Mat3b& bgr_raw) override;
 
   const FloorColourModel& colour_model() const { return colour_; }
-  // The edge map of the last frame segmented (for pictures and tests).
-  const EdgeMap& last_edges() const { return last_edges_; }
+  // The edge map of the last frame segmented (for pictures and tests); valid
+  // until the next Segment.
+  const EdgeMap& last_edges() const;
 
  private:
   PaperSegmenterOptions options_;
   std::optional<VignettingCorrector> corrector_;
   std::optional<VerticalDirectionField> vertical_;
   FloorColourModel colour_;
-  EdgeMap last_edges_;
+  std::optional<EdgeDetector> edges_;  // for the frames' size
 };
 
 }  // namespace pirouette::vision

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/core/obstacle_profile.h"
@@ -31,5 +33,32 @@ inline constexpr int kBlindSearchRows = 3;
 // Pure: the same mask gives the same profile.
 core::ObstacleProfile ExtractProfile(const cv::Mat1b& floor_mask,
                                      const camera::InversePerspectiveMap& ipm, double max_range_m);
+
+// ExtractProfile for a stream of masks of one camera: the same profiles, with
+// what depends on the camera and the range alone found once. For each column
+// and each row a search may start at, the first row up from it whose floor
+// point is missing or beyond max_range_m is kept, so that a mask costs a scan
+// of its rows from the bottom, all columns at once, until each column has met
+// the floor's edge (or that row), and at most three floor points a column,
+// instead of a floor point and a range for every floor pixel.
+class ProfileExtractor {
+ public:
+  ProfileExtractor(const camera::InversePerspectiveMap& ipm, double max_range_m);
+
+  double max_range_m() const { return max_range_m_; }
+  // ExtractProfile(floor_mask, ipm, max_range_m).
+  core::ObstacleProfile Extract(const cv::Mat1b& floor_mask) const;
+
+ private:
+  core::RangeReading ColumnReading(const cv::Mat1b& mask, int u, int start, int fail,
+                                   int end) const;
+
+  camera::InversePerspectiveMap ipm_;
+  double max_range_m_;
+  // Per column and start row bottom - k (k < kBlindSearchRows): -2 if that row
+  // itself fails (no floor point or beyond range), else the first failing row
+  // above it (-1 if none).
+  std::vector<std::array<int, kBlindSearchRows>> first_fail_;
+};
 
 }  // namespace pirouette::vision

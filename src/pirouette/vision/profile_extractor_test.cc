@@ -93,5 +93,40 @@ TEST(ProfileExtractorTest, BottomRowsLeftOutAreNotBlind) {
   }
 }
 
+void ExpectSameProfiles(const core::ObstacleProfile& a, const core::ObstacleProfile& b) {
+  ASSERT_EQ(a.readings.size(), b.readings.size());
+  EXPECT_EQ(a.max_range_m, b.max_range_m);
+  for (std::size_t i = 0; i < a.readings.size(); ++i) {
+    EXPECT_EQ(a.readings[i].kind, b.readings[i].kind) << "column " << i;
+    EXPECT_EQ(a.readings[i].range_m, b.readings[i].range_m) << "column " << i;
+    EXPECT_EQ(a.readings[i].bearing_rad, b.readings[i].bearing_rad) << "column " << i;
+  }
+}
+
+TEST(ProfileExtractorTest, TheExtractorGivesExtractProfilesReadings) {
+  const camera::CameraModel camera = PaperCamera();
+  const camera::InversePerspectiveMap ipm(camera);
+  cv::RNG rng(3);
+  for (const double max_range : {0.2, 0.4068, 10.0}) {
+    const ProfileExtractor extractor(ipm, max_range);
+    EXPECT_EQ(extractor.max_range_m(), max_range);
+    for (int trial = 0; trial < 6; ++trial) {
+      // Floor up to a random row per column, holes, blind columns, floor to
+      // the top row: every case of the reading.
+      cv::Mat1b mask(240, 320, uchar{0});
+      for (int u = 0; u < 320; ++u) {
+        const int top = rng.uniform(-5, 240);
+        if (top >= 0) mask.col(u).rowRange(top, 240).setTo(255);
+        if (rng.uniform(0, 10) == 0) mask.col(u).rowRange(237, 240).setTo(0);  // blind
+        if (rng.uniform(0, 10) == 0) mask(239, u) = 0;                         // margin
+      }
+      for (int hole = 0; hole < 40 * trial; ++hole) {
+        mask(rng.uniform(0, 240), rng.uniform(0, 320)) = 0;
+      }
+      ExpectSameProfiles(extractor.Extract(mask), ExtractProfile(mask, ipm, max_range));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pirouette::vision

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <opencv2/imgproc.hpp>
 
 #include "pirouette/sim/renderer.h"
@@ -221,6 +223,92 @@ TEST(EdgeMapTest, MarksEdgesAlongTheWorldVerticalOnly) {
       0);
   EXPECT_GT(cv::countNonZero(map.edges(cv::Rect(5, 40, 15, 10))), 10);
   EXPECT_EQ(cv::countNonZero(map.vertical(cv::Rect(5, 40, 15, 10))), 0);
+}
+
+// FindEdges by its definition with OpenCV's calls: each channel's 3×3 Sobel,
+// the channel of the largest squared gradient (the first on a tie), Canny on
+// that gradient, and the vertical test at each edge pixel.
+EdgeMap ReferenceEdges(const cv::Mat3b& bgr, const VerticalDirectionField& vertical,
+                       const EdgeMapOptions& options) {
+  cv::Mat dx3;
+  cv::Mat dy3;
+  cv::Sobel(bgr, dx3, CV_16S, 1, 0, 3);
+  cv::Sobel(bgr, dy3, CV_16S, 0, 1, 3);
+  cv::Mat1s dx(bgr.size());
+  cv::Mat1s dy(bgr.size());
+  for (int v = 0; v < bgr.rows; ++v) {
+    for (int u = 0; u < bgr.cols; ++u) {
+      const cv::Vec3s x = dx3.at<cv::Vec3s>(v, u);
+      const cv::Vec3s y = dy3.at<cv::Vec3s>(v, u);
+      int best = 0;
+      for (int c = 1; c < 3; ++c) {
+        if (x[c] * x[c] + y[c] * y[c] > x[best] * x[best] + y[best] * y[best]) best = c;
+      }
+      dx(v, u) = x[best];
+      dy(v, u) = y[best];
+    }
+  }
+  EdgeMap map;
+  cv::Canny(dx, dy, map.edges, options.canny_low, options.canny_high, true);
+  map.vertical = cv::Mat1b(bgr.size(), std::uint8_t{0});
+  const auto sin_tolerance =
+      static_cast<float>(std::sin(options.vertical_tolerance_deg * M_PI / 180.0));
+  for (int v = 0; v < bgr.rows; ++v) {
+    for (int u = 0; u < bgr.cols; ++u) {
+      if (map.edges(v, u) == 0) continue;
+      const float x = dx(v, u);
+      const float y = dy(v, u);
+      const cv::Vec2f up = vertical.At(u, v);
+      if (std::abs(x * up[0] + y * up[1]) <= sin_tolerance * std::sqrt(x * x + y * y)) {
+        map.vertical(v, u) = 255;
+      }
+    }
+  }
+  return map;
+}
+
+TEST(EdgeMapTest, TheDetectorFindsWhatTheDefinitionDoes) {
+  const camera::CameraModel camera = PaperCamera();
+  const VerticalDirectionField vertical(camera);
+  cv::Mat3b image = FloorWithBox();
+  cv::resize(image, image, cv::Size(320, 240), 0.0, 0.0, cv::INTER_LINEAR);
+  cv::GaussianBlur(image, image, cv::Size(), 1.0);
+  for (const EdgeMapOptions& options : {EdgeMapOptions{}, EdgeMapOptions{60.0, 180.0, 5.0}}) {
+    EdgeDetector detector(vertical, options);
+    for (int frame = 0; frame < 2; ++frame) {  // the second with its buffers kept
+      const EdgeMap& edges = detector.Find(image);
+      const EdgeMap expected = ReferenceEdges(image, vertical, options);
+      EXPECT_EQ(cv::countNonZero(edges.edges != expected.edges), 0);
+      EXPECT_EQ(cv::countNonZero(edges.vertical != expected.vertical), 0);
+      EXPECT_EQ(cv::countNonZero(detector.barrier() != (expected.edges & ~expected.vertical)), 0);
+      EXPECT_GT(cv::countNonZero(expected.edges), 100);
+    }
+  }
+}
+
+// The picture of FloorWithBox at twice its size (each pixel a 2×2 block):
+// the segmenter works on a grid of 2×2 cells, which is the picture itself but
+// for the texture (measured at full resolution), and finds the same floor:
+// the boundary within two cells, as at 160×120.
+TEST(AppearanceSegmenterTest, AFrameTwiceTheWorkingWidth) {
+  cv::Mat3b large;
+  cv::resize(FloorWithBox(), large, cv::Size(320, 240), 0.0, 0.0, cv::INTER_NEAREST);
+  auto segmenter = MakeFloorSegmenter(SegmentationMethod::kDefault, std::nullopt);
+  const cv::Mat1b mask = segmenter->Segment(large);
+  ASSERT_EQ(mask.size(), large.size());
+  for (int u = 2 * kBoxLeft + 6; u < 2 * kBoxRight - 6; u += 5) {
+    EXPECT_NEAR(BoundaryRow(mask, u), 2 * kBoxBase - 1, 4) << "column " << u;
+  }
+  for (int u = 5; u < 2 * kBoxLeft - 6; u += 5) {
+    EXPECT_NEAR(BoundaryRow(mask, u), 2 * kWallBottom - 1, 4) << "column " << u;
+  }
+  // A frame whose size is not a multiple of the grid's cells.
+  cv::Mat3b odd;
+  cv::copyMakeBorder(large, odd, 0, 3, 0, 5, cv::BORDER_REPLICATE);
+  const cv::Mat1b odd_mask = segmenter->Segment(odd);
+  ASSERT_EQ(odd_mask.size(), odd.size());
+  EXPECT_EQ(odd_mask(odd.rows - 1, 160), 255);
+  EXPECT_EQ(odd_mask(100, 160), 0);  // the box
 }
 
 }  // namespace

@@ -18,7 +18,11 @@ namespace pirouette::vision {
 // (the line leaves the view at once) get the image's up direction (0, -1).
 class VerticalDirectionField {
  public:
-  explicit VerticalDirectionField(const camera::CameraModel& camera);
+  explicit VerticalDirectionField(const camera::CameraModel& camera)
+      : VerticalDirectionField(camera, 1) {}
+  // For frames reduced by `scale` >= 1 (a pixel per scale × scale block of the
+  // camera's, the partial blocks dropped): the direction at each block's centre.
+  VerticalDirectionField(const camera::CameraModel& camera, int scale);
   // Without a camera: an upright pinhole, every vertical runs up the image.
   VerticalDirectionField(int width, int height);
 

@@ -55,5 +55,21 @@ TEST(VerticalDirectionFieldTest, WithoutACameraVerticalIsUpTheImage) {
   EXPECT_EQ(field.At(0, 0), cv::Vec2f(0.0f, -1.0f));
 }
 
+TEST(VerticalDirectionFieldTest, AReducedGridTakesTheDirectionAtItsBlocksCentre) {
+  const camera::CameraModel camera = PaperCamera();
+  const VerticalDirectionField full(camera);
+  const VerticalDirectionField reduced(camera, 2);
+  EXPECT_EQ(reduced.width(), 160);
+  EXPECT_EQ(reduced.height(), 120);
+  for (int v = 0; v < 120; v += 7) {
+    for (int u = 0; u < 160; u += 9) {
+      // The block's centre lies between four pixels; the field is smooth.
+      const cv::Vec2f a = reduced.At(u, v);
+      const cv::Vec2f b = full.At(2 * u, 2 * v);
+      EXPECT_LT(AngleDeg({a[0], a[1]}, {b[0], b[1]}), 1.0) << u << ", " << v;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pirouette::vision

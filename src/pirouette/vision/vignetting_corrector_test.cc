@@ -79,5 +79,53 @@ TEST(VignettingCorrectorTest, SaturatesInsteadOfWrapping) {
   EXPECT_EQ(out(0, 0), cv::Vec3b(255, 255, 255));
 }
 
+TEST(VignettingCorrectorTest, AReducedGridTakesItsBlocksMeanFactor) {
+  const camera::CameraModel camera = PaperCamera();
+  const VignettingCorrector full(camera);
+  const VignettingCorrector reduced(camera, 2);
+  EXPECT_EQ(reduced.width(), 160);
+  EXPECT_EQ(reduced.height(), 120);
+  EXPECT_EQ(reduced.scale(), 2);
+  for (const auto& [u, v] : {std::pair{0, 0}, std::pair{80, 60}, std::pair{159, 119}}) {
+    for (int c = 0; c < 3; ++c) {
+      const double mean =
+          0.25 * (full.Factor(2 * u, 2 * v, c) + full.Factor(2 * u + 1, 2 * v, c) +
+                  full.Factor(2 * u, 2 * v + 1, c) + full.Factor(2 * u + 1, 2 * v + 1, c));
+      EXPECT_NEAR(reduced.Factor(u, v, c), mean, 1e-3);
+    }
+  }
+}
+
+TEST(VignettingCorrectorTest, ReducingAndCorrectingInOnePass) {
+  const camera::CameraModel camera = PaperCamera();
+  cv::Mat3b raw(240, 320);
+  cv::RNG rng(9);
+  rng.fill(raw, cv::RNG::UNIFORM, 0, 200);
+  for (const int scale : {1, 2, 3, 4}) {
+    const VignettingCorrector reduced(camera, scale);
+    cv::Mat3b direct;
+    reduced.ReduceAndApply(raw, direct);
+    cv::Mat3b means;
+    ReduceByBlockMean(raw, scale, means);
+    ASSERT_EQ(direct.size(), means.size());
+    // Correcting the block means (rounded) against correcting the exact sums.
+    EXPECT_LE(cv::norm(direct, reduced.Apply(means), cv::NORM_INF), 1.0) << "scale " << scale;
+  }
+}
+
+TEST(VignettingCorrectorTest, BlockMeansAreOpenCvsAreaReduction) {
+  cv::Mat3b raw(48, 64);
+  cv::RNG rng(10);
+  rng.fill(raw, cv::RNG::UNIFORM, 0, 256);
+  for (const int scale : {1, 2, 3, 4}) {
+    cv::Mat3b means;
+    ReduceByBlockMean(raw, scale, means);
+    cv::Mat3b area;
+    cv::resize(raw(cv::Rect(0, 0, 64 / scale * scale, 48 / scale * scale)), area,
+               cv::Size(64 / scale, 48 / scale), 0.0, 0.0, cv::INTER_AREA);
+    EXPECT_LE(cv::norm(means, area, cv::NORM_INF), 1.0) << "scale " << scale;
+  }
+}
+
 }  // namespace
 }  // namespace pirouette::vision
