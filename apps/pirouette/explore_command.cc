@@ -55,9 +55,7 @@ Command AddExploreCommand(CLI::App& parent) {
   cmd->add_flag("--video", request->video, "also write OUT/explore.mp4");
   cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
   return {cmd, [request, planner, method] {
-            request->options.planner = *planner == "frontier"
-                                           ? app::PlannerKind::kFrontier
-                                           : app::PlannerKind::kDistanceTransform;
+            request->options.planner = *app::ParsePlannerKind(*planner);
             request->options.method = *app::ParseMaskSource(*method);
             request->options.stop_requested = &g_stop;
             std::signal(SIGINT, OnInterrupt);

@@ -33,15 +33,14 @@ Command AddExploreEvalCommand(CLI::App& parent) {
   return {cmd, [request, planners] {
             request->planners.clear();
             for (const std::string& p : *planners) {
-              request->planners.push_back(p == "frontier" ? app::PlannerKind::kFrontier
-                                                          : app::PlannerKind::kDistanceTransform);
+              request->planners.push_back(*app::ParsePlannerKind(p));
             }
             const auto runs = app::EvaluateExploration(*request, [](const app::ExploreEvalRun& r) {
               std::fprintf(stderr,
                            "explore-eval: %s %s seed %llu: %s, coverage %.3f, path %.2f m, "
                            "%d stops, %.1f s\n",
                            r.world_name.c_str(),
-                           r.planner == app::PlannerKind::kFrontier ? "frontier" : "dt",
+                           std::string(app::PlannerKindName(r.planner)).c_str(),
                            static_cast<unsigned long long>(r.seed), r.status.c_str(),
                            r.eval.coverage, r.path_length_m, r.stops, r.wall_time_s);
             });

@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <numbers>
+#include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "pirouette/app/image_io.h"
 #include "pirouette/app/look_ahead.h"
@@ -54,25 +57,6 @@ mapping::OccupancyGrid InitialGrid(const core::Pose2& start, double cell_m,
       core::GridGeometry::Covering(cell_m, lo, Eigen::Vector2d(2 * kHalf, 2 * kHalf)), occupancy);
 }
 
-// The map as the planner reads it: unknown is what no reading ever touched.
-// A touched cell the readings disagree on (a hit and a miss: the edge of an
-// obstacle's base seen from two sides) or that only a blind view touched is
-// explored: it counts as occupied when more likely occupied, else free.
-// Without this the explorer keeps going back to look at cells that another
-// look will not settle.
-mapping::TrinaryMap DecidedMap(const mapping::OccupancyGrid& grid) {
-  mapping::TrinaryMap map = grid.ToTrinary();
-  const core::GridGeometry& g = grid.geometry();
-  for (std::size_t i = 0; i < map.cells.size(); ++i) {
-    if (map.cells[i] != mapping::CellState::kUnknown) continue;
-    const core::CellIndex c = g.Unflat(i);
-    if (!grid.Known(c)) continue;
-    map.cells[i] =
-        grid.LogOdds(c) > 0.0F ? mapping::CellState::kOccupied : mapping::CellState::kFree;
-  }
-  return map;
-}
-
 // The loop of one exploration; owns the simulated robot and the perception.
 class Explorer {
  public:
@@ -92,6 +76,7 @@ class Explorer {
                  return renderer_.Render(world_T_robot);
                }),
         ipm_(world.robot().camera),
+        extractor_(ipm_, max_range_m_),
         masker_(options.method, world, world.robot().camera),
         look_(LookAheadOptions{radius_m_, NearRange(ipm_), max_range_m_, cell_m_}),
         start_(Clock::now()) {
@@ -179,7 +164,7 @@ class Explorer {
       StageTimer timer(result_.times.perceive_s);
       bgr = ToBgrMat(frame.image);
       mask = masker_.Mask(bgr, robot_.TruePose());
-      profile = vision::ExtractProfile(mask, ipm_, max_range_m_);
+      profile = extractor_.Extract(mask);
     }
     {
       StageTimer timer(result_.times.update_s);
@@ -249,7 +234,7 @@ class Explorer {
         const LookAhead::Finding finding = look_.Blocking(profile, leg);
         const LookVerdict verdict = finding.verdict;
         if (verdict == LookVerdict::kBlind &&
-            !CorridorKnownFree(DecidedMap(result_.grid), pose.translation(),
+            !CorridorKnownFree(result_.grid.ToExploredMap(), pose.translation(),
                                pose.translation() + leg * robot_.Odometry().Direction(),
                                radius_m_)) {
           BackUpToSee();
@@ -319,9 +304,12 @@ class Explorer {
   // (under the camera, within its near range, when it has just looked all
   // round) and those it gave up on count as free.
   mapping::TrinaryMap PlanningMap() const {
-    mapping::TrinaryMap map = DecidedMap(result_.grid);
-    for (std::size_t i : given_up_) {
-      if (map.cells[i] == mapping::CellState::kUnknown) map.cells[i] = mapping::CellState::kFree;
+    mapping::TrinaryMap map = result_.grid.ToExploredMap();
+    for (const WorldCell& key : given_up_) {
+      const std::optional<core::CellIndex> c = map.geometry.CellAt(CentreOf(key));
+      if (!c) continue;
+      mapping::CellState& state = map.cells[map.geometry.Flat(*c)];
+      if (state == mapping::CellState::kUnknown) state = mapping::CellState::kFree;
     }
     if (AtLastPirouette()) {
       ForEachUnknownNear(map, *last_pirouette_, NearBlindRadius(),
@@ -340,6 +328,17 @@ class Explorer {
   }
 
   double NearBlindRadius() const { return ViewDistance() + cell_m_; }
+
+  // A map cell named by its place in the world (the map's origin moves by
+  // whole cells as it grows, so a flat index would name another cell).
+  using WorldCell = std::pair<std::int64_t, std::int64_t>;
+  WorldCell KeyOf(const Eigen::Vector2d& centre) const {
+    return {std::llround(centre.x() / cell_m_ - 0.5), std::llround(centre.y() / cell_m_ - 0.5)};
+  }
+  Eigen::Vector2d CentreOf(const WorldCell& key) const {
+    return {(static_cast<double>(key.first) + 0.5) * cell_m_,
+            (static_cast<double>(key.second) + 0.5) * cell_m_};
+  }
 
   template <typename F>
   static void ForEachUnknownNear(const mapping::TrinaryMap& map, const Eigen::Vector2d& centre,
@@ -364,16 +363,18 @@ class Explorer {
   bool StepAwayToSeeNearby() {
     if (!last_pirouette_) return false;
     const mapping::TrinaryMap map = result_.grid.ToTrinary();
-    std::vector<std::size_t> nearby;
+    std::vector<WorldCell> nearby;
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     ForEachUnknownNear(map, *last_pirouette_, NearBlindRadius(), [&](std::size_t i) {
-      if (std::find(given_up_.begin(), given_up_.end(), i) != given_up_.end()) return;
-      nearby.push_back(i);
-      sum += map.geometry.CellCentre(map.geometry.Unflat(i));
+      const Eigen::Vector2d centre = map.geometry.CellCentre(map.geometry.Unflat(i));
+      const WorldCell key = KeyOf(centre);
+      if (given_up_.contains(key)) return;
+      nearby.push_back(key);
+      sum += centre;
     });
     // Ignore the robot's own footprint's rim and specks: not worth a trip.
     if (nearby.size() < 4 || step_aways_ >= kMaxStepAways) {
-      given_up_.insert(given_up_.end(), nearby.begin(), nearby.end());
+      given_up_.insert(nearby.begin(), nearby.end());
       return false;
     }
     ++step_aways_;
@@ -383,7 +384,8 @@ class Explorer {
     const double distance = look_.options().near_m + 3.0 * cell_m_;
     for (int k = 0; k < 12; ++k) {
       // Directions away from the unknown first, alternating either side.
-      const double offset = (k % 2 == 0 ? 1 : -1) * ((k + 1) / 2) * std::numbers::pi / 6.0;
+      const int steps = (k + 1) / 2;  // 0, 1, 1, 2, 2, ...
+      const double offset = (k % 2 == 0 ? 1 : -1) * steps * std::numbers::pi / 6.0;
       const double heading = away + offset;
       const Eigen::Vector2d to =
           here + distance * Eigen::Vector2d(std::cos(heading), std::sin(heading));
@@ -394,9 +396,9 @@ class Explorer {
       break;
     }
     // Whatever near the old stop is still unknown cannot be seen: give it up.
-    const mapping::TrinaryMap after = result_.grid.ToTrinary();
-    for (std::size_t i : nearby) {
-      if (after.cells[i] == mapping::CellState::kUnknown) given_up_.push_back(i);
+    for (const WorldCell& key : nearby) {
+      const core::CellIndex c = result_.grid.geometry().CellOf(CentreOf(key));
+      if (result_.grid.State(c) == mapping::CellState::kUnknown) given_up_.insert(key);
     }
     return true;
   }
@@ -424,7 +426,7 @@ class Explorer {
         const double mid = 0.5 * (lo + hi);
         ((from + mid * d - plan.goal_world).norm() > view ? lo : hi) = mid;
       }
-      kept.push_back(from + hi * d);
+      kept.emplace_back(from + hi * d);
       break;
     }
     plan.waypoints_world = std::move(kept);
@@ -487,17 +489,28 @@ class Explorer {
   sim::Renderer renderer_;
   sim::SimRobot robot_;
   camera::InversePerspectiveMap ipm_;
+  vision::ProfileExtractor extractor_;  // the profile tables, built once
   FloorMasker masker_;
   LookAhead look_;
   std::unique_ptr<explore::Planner> planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
   core::Pose2 start_pose_;
-  std::vector<std::size_t> given_up_;
+  std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing
   int step_aways_ = 0;
   Clock::time_point start_;
 };
 
 }  // namespace
+
+std::string_view PlannerKindName(PlannerKind kind) {
+  return kind == PlannerKind::kFrontier ? "frontier" : "dt";
+}
+
+std::optional<PlannerKind> ParsePlannerKind(std::string_view name) {
+  if (name == "dt") return PlannerKind::kDistanceTransform;
+  if (name == "frontier") return PlannerKind::kFrontier;
+  return std::nullopt;
+}
 
 double DefaultCellSize(const sim::World& world) { return world.robot().radius < 0.1 ? 0.01 : 0.02; }
 

@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "pirouette/app/floor_masker.h"
@@ -16,6 +17,11 @@
 namespace pirouette::app {
 
 enum class PlannerKind { kDistanceTransform, kFrontier };
+
+// "dt" | "frontier", the command line's and run.json's names.
+std::string_view PlannerKindName(PlannerKind kind);
+// The planner of a name; nullopt for any other.
+std::optional<PlannerKind> ParsePlannerKind(std::string_view name);
 
 // How a simulated exploration runs. Zero for a length means "derive it".
 struct ExplorationOptions {

@@ -16,7 +16,7 @@ namespace pirouette::app {
 class ExplorationVideo {
  public:
   // Throws std::runtime_error when the encoder cannot be opened.
-  ExplorationVideo(std::string path, double fps = 12.0);
+  explicit ExplorationVideo(std::string path, double fps = 12.0);
   ExplorationVideo(const ExplorationVideo&) = delete;
   ExplorationVideo& operator=(const ExplorationVideo&) = delete;
   ~ExplorationVideo();

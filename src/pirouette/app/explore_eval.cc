@@ -10,10 +10,6 @@
 namespace pirouette::app {
 namespace {
 
-std::string_view Name(PlannerKind kind) {
-  return kind == PlannerKind::kFrontier ? "frontier" : "dt";
-}
-
 struct Summary {
   int runs = 0;
   int complete = 0;
@@ -92,7 +88,7 @@ std::string ExploreEvalTable(const std::vector<ExploreEvalRun>& runs) {
       const auto it = summaries.find({world, planner});
       if (it == summaries.end()) continue;
       const Summary& s = it->second;
-      std::string ratio = "";
+      std::string ratio;
       const auto baseline = summaries.find({world, PlannerKind::kFrontier});
       if (planner == PlannerKind::kDistanceTransform && baseline != summaries.end()) {
         ratio = fmt::format("{:.2f}×", s.MeanPath() / baseline->second.MeanPath());
@@ -100,7 +96,7 @@ std::string ExploreEvalTable(const std::vector<ExploreEvalRun>& runs) {
       out += fmt::format(
           "| {} | {} | {}/{} | {:.3f} | {:.4f} | {:.4f} | {:.4f} ({:.2f} cells) | {:.2f} | {:.1f} "
           "| {:.1f} | {} |\n",
-          world, Name(planner), s.complete, s.runs, s.worst_coverage, s.worst_false_free,
+          world, PlannerKindName(planner), s.complete, s.runs, s.worst_coverage, s.worst_false_free,
           s.worst_false_occupied, s.worst_wall_error_m, s.worst_wall_error_m / s.cell_m,
           s.MeanPath(), s.stops_sum / s.runs, s.time_sum / s.runs, ratio);
     }

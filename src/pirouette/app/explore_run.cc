@@ -22,10 +22,6 @@
 namespace pirouette::app {
 namespace {
 
-std::string_view PlannerName(PlannerKind kind) {
-  return kind == PlannerKind::kFrontier ? "frontier" : "dt";
-}
-
 // The live progress line: rewritten in place on a terminal, a line every few
 // seconds otherwise (a log file).
 class ProgressLine {
@@ -75,7 +71,7 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   run["seed"] = request.options.seed;
   run["status"] = result.status;
   if (!result.reason.empty()) run["reason"] = result.reason;
-  run["planner"] = PlannerName(request.options.planner);
+  run["planner"] = PlannerKindName(request.options.planner);
   run["method"] = MaskSourceName(request.options.method);
   run["moves"] = result.moves;
   run["turns"] = result.turns;

@@ -41,18 +41,14 @@ class LookAhead {
   // within the max range.
   double LongestCheckedMove() const;
 
-  // Judges a forward move of `distance_m` (> 0) from the frame's profile,
-  // taken facing the move (readings in the robot frame).
-  LookVerdict Check(const core::ObstacleProfile& profile, double distance_m) const {
-    return Blocking(profile, distance_m).verdict;
-  }
-
   struct Finding {
     LookVerdict verdict = LookVerdict::kClear;
     // For kBlocked: the hits inside the swept corridor, robot frame.
     std::vector<Eigen::Vector2d> hits_robot;
   };
-  // Check, and where the way is blocked.
+  // Judges a forward move of `distance_m` (> 0) from the frame's profile,
+  // taken facing the move (readings in the robot frame), and says where the
+  // way is blocked.
   Finding Blocking(const core::ObstacleProfile& profile, double distance_m) const;
 
  private:

@@ -78,6 +78,19 @@ TrinaryMap OccupancyGrid::ToTrinary() const {
   return map;
 }
 
+TrinaryMap OccupancyGrid::ToExploredMap() const {
+  TrinaryMap map{geometry_, std::vector<CellState>(cells_.size())};
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    const Cell& cell = cells_[i];
+    CellState state = StateOf(cell);
+    if (state == CellState::kUnknown && cell.stamp != 0) {
+      state = cell.log_odds > 0.0F ? CellState::kOccupied : CellState::kFree;
+    }
+    map.cells[i] = state;
+  }
+  return map;
+}
+
 void OccupancyGrid::BeginFrame() {
   if (++frame_ == 0) {
     // After 2^32 frames the stamps wrap: keep "touched" (1) and start again.

@@ -91,6 +91,11 @@ class OccupancyGrid {
   }
   // The whole grid by State(), on the same geometry.
   TrinaryMap ToTrinary() const;
+  // The grid as an explorer reads it: unknown is only what no update ever
+  // touched. A touched cell between the thresholds (a hit and a miss that
+  // cancel, or a blind area) counts as occupied when its log-odds are above
+  // 0, else free: another look would not settle it.
+  TrinaryMap ToExploredMap() const;
   // A copy holding only the bounding box of the cells any update touched,
   // plus `margin_cells` all round (the same cells at the same world
   // positions): the map to write out. A grid nothing touched stays whole.

@@ -239,6 +239,24 @@ TEST(OccupancyGrid, GrowthRefusesBadRectangles) {
   EXPECT_EQ(grid.geometry().width(), 10);
 }
 
+TEST(OccupancyGrid, ExploredMapDecidesEveryTouchedCell) {
+  OccupancyGrid grid = SmallGrid();
+  Repeat(grid, {0, 0}, CellUpdate::kBlind, 1);  // 0.6: unknown, leaning occupied
+  Repeat(grid, {1, 0}, CellUpdate::kHit, 1);
+  Repeat(grid, {1, 0}, CellUpdate::kMiss, 1);  // 0.7 then 0.4 -> 0.61: leaning occupied
+  Repeat(grid, {2, 0}, CellUpdate::kMiss, 1);  // 0.4: unknown, leaning free
+  Repeat(grid, {3, 0}, CellUpdate::kHit, 1);   // occupied
+  const TrinaryMap trinary = grid.ToTrinary();
+  const TrinaryMap explored = grid.ToExploredMap();
+  EXPECT_EQ(trinary.At({0, 0}), CellState::kUnknown);
+  EXPECT_EQ(explored.At({0, 0}), CellState::kOccupied);
+  EXPECT_EQ(explored.At({1, 0}), CellState::kOccupied);
+  EXPECT_EQ(trinary.At({2, 0}), CellState::kUnknown);
+  EXPECT_EQ(explored.At({2, 0}), CellState::kFree);
+  EXPECT_EQ(explored.At({3, 0}), CellState::kOccupied);
+  EXPECT_EQ(explored.At({4, 0}), CellState::kUnknown);  // never touched
+}
+
 TEST(OccupancyGrid, CroppedToKnownKeepsCellsAndWorldPositions) {
   OccupancyGrid grid(core::GridGeometry(0.1, {-1.0, -2.0}, 30, 20));
   ASSERT_TRUE(grid.Apply({10, 5}, CellUpdate::kHit));
