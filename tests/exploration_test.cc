@@ -56,8 +56,8 @@ TEST(ExplorationTest, ReturnHomeEndsWhereItStarted) {
   const ExplorationResult result = Explore(world, options);
   EXPECT_EQ(result.status, "complete") << result.reason;
   const core::Pose2& start = world.robot().start;
-  EXPECT_LT((result.final_true_pose.translation() - start.translation()).norm(), 0.02);
-  EXPECT_LT(std::abs(core::NormalizeAngle(result.final_true_pose.heading() - start.heading())),
+  EXPECT_LT((result.final_true_pose->translation() - start.translation()).norm(), 0.02);
+  EXPECT_LT(std::abs(core::NormalizeAngle(result.final_true_pose->heading() - start.heading())),
             0.02);
 }
 

@@ -30,5 +30,9 @@ Command AddSegmentEvalCommand(CLI::App& parent);
 Command AddEvalCommand(CLI::App& parent);
 Command AddExploreCommand(CLI::App& parent);
 Command AddExploreEvalCommand(CLI::App& parent);
+Command AddMapCommand(CLI::App& parent);
+Command AddCalibrateCommand(CLI::App& parent);
+Command AddCaptureCommand(CLI::App& parent);
+Command AddSimServeCommand(CLI::App& parent);
 
 }  // namespace pirouette::cli

@@ -1,19 +1,13 @@
-#include <csignal>
 #include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/interrupt.h"
 #include "pirouette/app/explore_run.h"
 
 namespace pirouette::cli {
-namespace {
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void OnInterrupt(int /*signal*/) { g_stop.store(true); }
-
-}  // namespace
+namespace {}  // namespace
 
 Command AddExploreCommand(CLI::App& parent) {
   auto request = std::make_shared<app::ExploreRequest>();
@@ -21,15 +15,20 @@ Command AddExploreCommand(CLI::App& parent) {
   auto method = std::make_shared<std::string>("default");
   CLI::App* cmd = parent.add_subcommand(
       "explore",
-      "Drop the simulated robot into a world knowing nothing and let it map the floor by itself: "
+      "Drop the robot (simulated, or a real one with --robot) into a world knowing nothing and let "
+      "it map the floor by itself: "
       "it pirouettes (12 frames, 30 degrees apart), maps the floor's edges, plans the shortest "
       "safe path to the nearest unknown space, looks before every move, and stops when no "
       "reachable unknown space is left. Writes OUT/map.yaml + map.pgm (ROS map_server), "
       "map.png, run.json (with the map's evaluation against the world) and, with --video, "
       "explore.mp4. Ctrl-C stops and still writes the map so far.\n"
       "Exit: 0 complete or step limit, 1 stuck or interrupted (outputs still written), 2 bad "
-      "input.\n  example: pirouette explore --world worlds/soccer_field.yaml --out out --video");
-  cmd->add_option("--world", request->world_path, "world file (pirouette-world/1)")->required();
+      "input.\n  example: pirouette explore --world worlds/soccer_field.yaml --out out --video\n"
+      "  a real robot: pirouette explore --robot tcp://192.168.1.20:5555 --camera cam.yaml "
+      "--radius 0.15 --record run1");
+  cmd->add_option("--world", request->world_path,
+                  "world file (pirouette-world/1); with --robot only for the camera, the radius "
+                  "and the evaluation");
   cmd->add_option("--out", request->out_dir, "output folder")->capture_default_str();
   cmd->add_option("--seed", request->options.seed,
                   "seed of the simulator's noise (camera and odometry)")
@@ -53,13 +52,26 @@ Command AddExploreCommand(CLI::App& parent) {
   cmd->add_flag("--return-home", request->options.return_home,
                 "drive back to the start when the map is complete");
   cmd->add_flag("--video", request->video, "also write OUT/explore.mp4");
+  cmd->add_option("--robot", request->robot_url,
+                  "explore with a robot that speaks the line protocol at tcp://HOST:PORT "
+                  "(docs/robot-protocol.md; `pirouette sim-serve` serves the simulator so) "
+                  "instead of in the simulator");
+  cmd->add_option("--camera", request->camera_path,
+                  "the robot's camera file (default: the world's robot camera)");
+  cmd->add_option("--radius", request->radius_m,
+                  "the robot's radius, metres (default: the world's robot)");
+  cmd->add_option("--robot-timeout", request->robot_timeout_s,
+                  "seconds to wait for the robot's reply before giving up (the map so far is "
+                  "written)")
+      ->capture_default_str();
+  cmd->add_option("--record", request->record_dir,
+                  "also write a run log (pirouette-log/1: camera.yaml, frames/, frames.csv) in "
+                  "this new folder; `pirouette map --log DIR` maps it again");
   cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
   return {cmd, [request, planner, method] {
             request->options.planner = *app::ParsePlannerKind(*planner);
             request->options.method = *app::ParseMaskSource(*method);
-            request->options.stop_requested = &g_stop;
-            std::signal(SIGINT, OnInterrupt);
-            std::signal(SIGTERM, OnInterrupt);
+            request->options.stop_requested = StopOnInterrupt();
             const app::ExploreReport report = app::RunExplore(*request);
             const std::string& status = report.result.status;
             if (!request->quiet) {

@@ -20,9 +20,13 @@ int main(int argc, char** argv) {
   app.failure_message(CLI::FailureMessage::help);
 
   const std::vector<Command> commands = {
-      AddRenderCommand(app),         AddIpmReportCommand(app), AddRopCommand(app),
-      AddPerceptionEvalCommand(app), AddSegmentCommand(app),   AddSegmentEvalCommand(app),
-      AddEvalCommand(app),           AddExploreCommand(app),   AddExploreEvalCommand(app),
+      AddRenderCommand(app),      AddIpmReportCommand(app),
+      AddRopCommand(app),         AddPerceptionEvalCommand(app),
+      AddSegmentCommand(app),     AddSegmentEvalCommand(app),
+      AddEvalCommand(app),        AddExploreCommand(app),
+      AddExploreEvalCommand(app), AddMapCommand(app),
+      AddCalibrateCommand(app),   AddCaptureCommand(app),
+      AddSimServeCommand(app),
   };
 
   try {

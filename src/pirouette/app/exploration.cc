@@ -12,8 +12,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "pirouette/app/image_io.h"
+#include "pirouette/app/frame_mapper.h"
 #include "pirouette/app/look_ahead.h"
+#include "pirouette/app/simulated_robot.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
@@ -21,10 +22,8 @@
 #include "pirouette/explore/frontier_planner.h"
 #include "pirouette/explore/path.h"
 #include "pirouette/explore/planner.h"
-#include "pirouette/mapping/range_sensor_model.h"
-#include "pirouette/sim/renderer.h"
+#include "pirouette/robot/robot_error.h"
 #include "pirouette/sim/sim_robot.h"
-#include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::app {
 namespace {
@@ -46,39 +45,24 @@ class StageTimer {
   Clock::time_point start_;
 };
 
-// The grid the robot starts with: 2 m square around its start, on whole
-// cells; it grows as the robot sees farther.
-mapping::OccupancyGrid InitialGrid(const core::Pose2& start, double cell_m,
-                                   const mapping::OccupancyOptions& occupancy) {
-  constexpr double kHalf = 1.0;
-  const Eigen::Vector2d lo(std::floor((start.x() - kHalf) / cell_m) * cell_m,
-                           std::floor((start.y() - kHalf) / cell_m) * cell_m);
-  return mapping::OccupancyGrid(
-      core::GridGeometry::Covering(cell_m, lo, Eigen::Vector2d(2 * kHalf, 2 * kHalf)), occupancy);
-}
-
-// The loop of one exploration; owns the simulated robot and the perception.
+// The loop of one exploration, through any robot.
 class Explorer {
  public:
-  Explorer(const sim::World& world, const ExplorationOptions& options,
+  Explorer(robot::Robot& robot, const RobotDescription& description,
+           const ExplorationOptions& options, MaskFunction mask,
            const ExplorationObserver& observer)
-      : world_(world),
-        options_(options),
+      : options_(options),
         observer_(observer),
-        cell_m_(options.cell_m > 0.0 ? options.cell_m : DefaultCellSize(world)),
-        max_range_m_(options.max_range_m > 0.0 ? options.max_range_m
-                                               : camera::MaxRange(world.robot().camera, cell_m_)),
-        radius_m_(world.robot().radius),
-        renderer_(world, world.robot().camera, RenderOptionsFor(options)),
-        robot_(world, options.seed,
-               [this](const core::Pose2& world_T_robot) {
-                 StageTimer timer(result_.times.render_s);
-                 return renderer_.Render(world_T_robot);
-               }),
-        ipm_(world.robot().camera),
-        extractor_(ipm_, max_range_m_),
-        masker_(options.method, world, world.robot().camera),
-        look_(LookAheadOptions{radius_m_, NearRange(ipm_), max_range_m_, cell_m_}),
+        cell_m_(options.cell_m > 0.0 ? options.cell_m : DefaultCellSize(description.radius_m)),
+        radius_m_(description.radius_m),
+        robot_(robot),
+        mapper_(
+            MapperSetup{description.camera, description.radius_m, cell_m_,
+                        options.max_range_m > 0.0 ? options.max_range_m
+                                                  : camera::MaxRange(description.camera, cell_m_),
+                        options.occupancy},
+            std::move(mask), robot.Odometry()),
+        look_(mapper_.look_ahead()),
         start_(Clock::now()) {
     explore::PlannerOptions planner_options;
     planner_options.robot_radius_m = radius_m_;
@@ -86,16 +70,47 @@ class Explorer {
                    ? explore::MakeFrontierPlanner(planner_options)
                    : explore::MakeDistanceTransformPlanner(planner_options);
     coarse_m_ = planner_options.CoarseFactor(cell_m_) * cell_m_;
-    result_.grid = InitialGrid(robot_.Odometry(), cell_m_, options.occupancy);
   }
 
+  // The whole run; a robot that fails (robot::RobotError: it stopped
+  // answering, dropped the connection, answered garbage) ends it with status
+  // "stuck" and the map so far.
   ExplorationResult Run() {
+    try {
+      Loop();
+    } catch (const robot::RobotError& e) {
+      result_.status = "stuck";
+      result_.reason = e.what();
+    }
+    result_.wall_time_s = Seconds(Clock::now() - start_);
+    result_.times.perceive_s = mapper_.perceive_s();
+    result_.times.update_s = mapper_.update_s();
+    result_.grid = mapper_.TakeGrid();
+    return std::move(result_);
+  }
+
+ private:
+  enum class FollowOutcome { kReached, kBlocked, kStopped };
+  static constexpr int kMaxFailures = 40;
+  static constexpr int kMaxIdlePlans = 500;
+
+  void Loop() {
     start_pose_ = robot_.Odometry();
     result_.path.push_back(start_pose_);
     Pirouette();
     int failures = 0;  // plans in a row that could not be followed
+    int idle = 0;      // plans in a row after which the robot had not moved
+    int moves_before = result_.moves;
     while (result_.status.empty()) {
       if (Interrupted()) break;
+      idle = result_.moves == moves_before ? idle + 1 : 0;
+      moves_before = result_.moves;
+      if (idle > kMaxIdlePlans) {
+        // A guard: planning that never moves the robot must not spin forever.
+        result_.status = "stuck";
+        result_.reason = fmt::format("{} plans in a row did not move the robot", idle);
+        break;
+      }
       std::optional<explore::Plan> plan;
       {
         StageTimer timer(result_.times.plan_s);
@@ -113,7 +128,11 @@ class Explorer {
         continue;
       }
       const FollowOutcome outcome = Follow(*plan);
-      if (outcome == FollowOutcome::kReached) {
+      if (outcome == FollowOutcome::kReached && AtLastPirouette()) {
+        // The plan's waypoints were all where the robot stands (within a
+        // quarter cell): looking all round again would show nothing new.
+        planner_->ReportUnreachable(*plan);
+      } else if (outcome == FollowOutcome::kReached) {
         failures = 0;
         Pirouette();
       } else if (outcome == FollowOutcome::kBlocked) {
@@ -130,19 +149,6 @@ class Explorer {
       ReturnHome();
       if (result_.status.empty()) result_.status = "complete";
     }
-    result_.final_true_pose = robot_.TruePose();
-    result_.wall_time_s = Seconds(Clock::now() - start_);
-    return std::move(result_);
-  }
-
- private:
-  enum class FollowOutcome { kReached, kBlocked, kStopped };
-  static constexpr int kMaxFailures = 40;
-
-  static sim::RenderOptions RenderOptionsFor(const ExplorationOptions& options) {
-    sim::RenderOptions render;
-    render.seed = options.seed;
-    return render;
   }
 
   bool Interrupted() {
@@ -153,51 +159,44 @@ class Explorer {
     return false;
   }
 
-  // Takes a frame, reads its obstacle profile and puts it in the map.
-  core::ObstacleProfile Look() {
+  // Takes a frame, reads its obstacle profile and puts it in the map; the
+  // motions since the previous frame go with it to the observer (a log).
+  const FrameMapper::Seen& Look() {
     const robot::Frame frame = robot_.Capture();
     ++result_.frames;
-    cv::Mat3b bgr;
-    cv::Mat1b mask;
-    core::ObstacleProfile profile;
-    {
-      StageTimer timer(result_.times.perceive_s);
-      bgr = ToBgrMat(frame.image);
-      mask = masker_.Mask(bgr, robot_.TruePose());
-      profile = extractor_.Extract(mask);
+    if (observer_.on_capture) observer_.on_capture(frame, motions_since_frame_);
+    motions_since_frame_.clear();
+    last_seen_ = mapper_.AddFrame(frame);
+    last_seen_pose_ = frame.odometry;
+    if (observer_.on_frame) {
+      observer_.on_frame({last_seen_.bgr, last_seen_.mask, frame.odometry, mapper_.grid()});
     }
-    {
-      StageTimer timer(result_.times.update_s);
-      mapping::InsertProfile(result_.grid, profile, frame.odometry);
-      mapping::MarkFootprintFree(result_.grid, frame.odometry.translation(), radius_m_);
-    }
-    if (observer_.on_frame) observer_.on_frame({bgr, mask, frame.odometry, result_.grid});
-    return profile;
+    return last_seen_;
+  }
+
+  robot::MoveOutcome Execute(const robot::Move& move) {
+    robot::MoveOutcome outcome = robot_.Execute(move);
+    motions_since_frame_.push_back(outcome);
+    return outcome;
   }
 
   void Turn(double radians) {
     if (std::abs(radians) < 1e-9) return;
-    robot_.Execute(robot::Move::Turn(radians));
+    Execute(robot::Move::Turn(radians));
     ++result_.turns;
     result_.rotation_deg += std::abs(radians) * 180.0 / std::numbers::pi;
   }
 
-  // A straight move as made; false when it stopped at contact.
+  // A straight move as made; false when it stopped at contact (the robot
+  // then looks at what it touched, which maps the bumper's hit with it).
   bool Drive(double metres) {
-    const robot::MoveOutcome outcome = robot_.Execute(robot::Move::Straight(metres));
+    const robot::MoveOutcome outcome = Execute(robot::Move::Straight(metres));
     ++result_.moves;
     result_.path_length_m += std::abs(outcome.achieved);
     result_.path.push_back(outcome.odometry);
-    {
-      StageTimer timer(result_.times.update_s);
-      mapping::MarkFootprintFree(result_.grid, outcome.odometry.translation(), radius_m_);
-      if (outcome.stopped_at_contact) {
-        // The bumper's reading: something touches the robot's front.
-        core::ObstacleProfile bump;
-        bump.max_range_m = radius_m_ + cell_m_;
-        bump.readings.push_back({0.0, radius_m_ + 0.5 * cell_m_, core::ReadingKind::kHit});
-        mapping::InsertProfile(result_.grid, bump, outcome.odometry);
-      }
+    if (outcome.stopped_at_contact) {
+      mapper_.AddContact(outcome.odometry);
+      Look();
     }
     Report();
     if (result_.moves >= options_.max_steps && result_.status.empty()) {
@@ -230,11 +229,11 @@ class Explorer {
         if (distance < 0.25 * cell_m_) break;
         Turn(core::NormalizeAngle(std::atan2(to.y(), to.x()) - pose.heading()));
         const double leg = std::min(distance, look_.LongestCheckedMove());
-        const core::ObstacleProfile profile = Look();
+        const core::ObstacleProfile& profile = Look().profile;
         const LookAhead::Finding finding = look_.Blocking(profile, leg);
         const LookVerdict verdict = finding.verdict;
         if (verdict == LookVerdict::kBlind &&
-            !CorridorKnownFree(result_.grid.ToExploredMap(), pose.translation(),
+            !CorridorKnownFree(mapper_.grid().ToExploredMap(), pose.translation(),
                                pose.translation() + leg * robot_.Odometry().Direction(),
                                radius_m_)) {
           BackUpToSee();
@@ -242,7 +241,8 @@ class Explorer {
           return FollowOutcome::kBlocked;
         }
         if (verdict == LookVerdict::kBlocked) {
-          ConfirmBlocking(finding.hits_robot);
+          mapper_.ConfirmBlocking(profile, last_seen_pose_, leg);
+          if (observer_.on_blocked) observer_.on_blocked(leg);
           ++result_.blocked_looks;
           return FollowOutcome::kBlocked;
         }
@@ -250,21 +250,6 @@ class Explorer {
       }
     }
     return FollowOutcome::kReached;
-  }
-
-  // The look found the way blocked: make sure the map says so, so that the
-  // next plan goes another way (a cell the map thought free takes a few
-  // looks' hits to read occupied).
-  void ConfirmBlocking(const std::vector<Eigen::Vector2d>& hits_robot) {
-    StageTimer timer(result_.times.update_s);
-    const core::Pose2 pose = robot_.Odometry();
-    for (int round = 0; round < 4; ++round) {
-      result_.grid.BeginFrame();
-      for (const Eigen::Vector2d& hit : hits_robot) {
-        const core::CellIndex c = result_.grid.geometry().CellOf(pose * hit);
-        if (result_.grid.LogOdds(c) <= 0.0F) result_.grid.Apply(c, mapping::CellUpdate::kHit);
-      }
-    }
   }
 
   // The waypoints without those in line with their neighbours: one look and
@@ -289,7 +274,7 @@ class Explorer {
   // behind is free, and look again.
   void BackUpToSee() {
     const double back = look_.options().near_m;
-    const mapping::TrinaryMap map = result_.grid.ToTrinary();
+    const mapping::TrinaryMap map = mapper_.grid().ToTrinary();
     const core::Pose2 pose = robot_.Odometry();
     if (!CorridorKnownFree(map, pose.translation(), pose.translation() - back * pose.Direction(),
                            radius_m_)) {
@@ -304,7 +289,7 @@ class Explorer {
   // (under the camera, within its near range, when it has just looked all
   // round) and those it gave up on count as free.
   mapping::TrinaryMap PlanningMap() const {
-    mapping::TrinaryMap map = result_.grid.ToExploredMap();
+    mapping::TrinaryMap map = mapper_.grid().ToExploredMap();
     for (const WorldCell& key : given_up_) {
       const std::optional<core::CellIndex> c = map.geometry.CellAt(CentreOf(key));
       if (!c) continue;
@@ -362,7 +347,7 @@ class Explorer {
   // nothing to see or nowhere to go.
   bool StepAwayToSeeNearby() {
     if (!last_pirouette_) return false;
-    const mapping::TrinaryMap map = result_.grid.ToTrinary();
+    const mapping::TrinaryMap map = mapper_.grid().ToTrinary();
     std::vector<WorldCell> nearby;
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     ForEachUnknownNear(map, *last_pirouette_, NearBlindRadius(), [&](std::size_t i) {
@@ -397,8 +382,8 @@ class Explorer {
     }
     // Whatever near the old stop is still unknown cannot be seen: give it up.
     for (const WorldCell& key : nearby) {
-      const core::CellIndex c = result_.grid.geometry().CellOf(CentreOf(key));
-      if (result_.grid.State(c) == mapping::CellState::kUnknown) given_up_.insert(key);
+      const core::CellIndex c = mapper_.grid().geometry().CellOf(CentreOf(key));
+      if (mapper_.grid().State(c) == mapping::CellState::kUnknown) given_up_.insert(key);
     }
     return true;
   }
@@ -438,7 +423,7 @@ class Explorer {
     for (int attempt = 0; attempt < 5; ++attempt) {
       explore::PlannerOptions planner_options;
       planner_options.robot_radius_m = radius_m_;
-      explore::CoarseGrid grid = explore::PlanningGrid(result_.grid.ToTrinary(), planner_options);
+      explore::CoarseGrid grid = explore::PlanningGrid(mapper_.grid().ToTrinary(), planner_options);
       const std::optional<core::CellIndex> home = grid.geometry().CellAt(start_pose_.translation());
       const std::optional<core::CellIndex> here =
           grid.geometry().CellAt(robot_.Odometry().translation());
@@ -471,27 +456,26 @@ class Explorer {
     ExplorationProgress progress;
     progress.moves = result_.moves;
     progress.pirouettes = result_.pirouettes;
-    progress.known_area_m2 = static_cast<double>(result_.grid.KnownCellCount()) * cell_m_ * cell_m_;
+    progress.known_area_m2 =
+        static_cast<double>(mapper_.grid().KnownCellCount()) * cell_m_ * cell_m_;
     progress.elapsed_s = Seconds(Clock::now() - start_);
     observer_.on_progress(progress);
   }
 
   static constexpr int kMaxStepAways = 8;
 
-  const sim::World& world_;
   ExplorationOptions options_;
   const ExplorationObserver& observer_;
   double cell_m_;
-  double max_range_m_;
   double radius_m_;
   double coarse_m_ = 0.0;
   ExplorationResult result_;
-  sim::Renderer renderer_;
-  sim::SimRobot robot_;
-  camera::InversePerspectiveMap ipm_;
-  vision::ProfileExtractor extractor_;  // the profile tables, built once
-  FloorMasker masker_;
-  LookAhead look_;
+  robot::Robot& robot_;
+  FrameMapper mapper_;
+  const LookAhead& look_;
+  FrameMapper::Seen last_seen_;
+  core::Pose2 last_seen_pose_;
+  std::vector<robot::MoveOutcome> motions_since_frame_;
   std::unique_ptr<explore::Planner> planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
   core::Pose2 start_pose_;
@@ -512,7 +496,9 @@ std::optional<PlannerKind> ParsePlannerKind(std::string_view name) {
   return std::nullopt;
 }
 
-double DefaultCellSize(const sim::World& world) { return world.robot().radius < 0.1 ? 0.01 : 0.02; }
+double DefaultCellSize(double robot_radius_m) { return robot_radius_m < 0.1 ? 0.01 : 0.02; }
+
+double DefaultCellSize(const sim::World& world) { return DefaultCellSize(world.robot().radius); }
 
 void CheckExplorationOptions(const ExplorationOptions& options) {
   try {
@@ -535,11 +521,30 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   }
 }
 
+ExplorationResult ExploreWithRobot(robot::Robot& robot, const RobotDescription& description,
+                                   const ExplorationOptions& options, MaskFunction mask,
+                                   const ExplorationObserver& observer) {
+  CheckExplorationOptions(options);
+  if (!(description.radius_m > 0.0) || !std::isfinite(description.radius_m)) {
+    throw core::InputError("robot radius", 0, "", "must be a number > 0 (metres)");
+  }
+  Explorer explorer(robot, description, options, std::move(mask), observer);
+  return explorer.Run();
+}
+
 ExplorationResult Explore(const sim::World& world, const ExplorationOptions& options,
                           const ExplorationObserver& observer) {
   CheckExplorationOptions(options);
-  Explorer explorer(world, options, observer);
-  return explorer.Run();
+  const camera::CameraModel& camera = world.robot().camera;
+  SimulatedRobot simulated(world, options.seed);
+  sim::SimRobot& robot = simulated.robot();
+  FloorMasker masker(options.method, world, camera);
+  ExplorationResult result = ExploreWithRobot(
+      robot, RobotDescription{camera, world.robot().radius}, options,
+      [&](const cv::Mat3b& bgr) { return masker.Mask(bgr, robot.TruePose()); }, observer);
+  result.final_true_pose = robot.TruePose();
+  result.times.render_s = simulated.render_s();
+  return result;
 }
 
 }  // namespace pirouette::app

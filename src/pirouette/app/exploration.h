@@ -9,9 +9,12 @@
 #include <vector>
 
 #include "pirouette/app/floor_masker.h"
+#include "pirouette/app/frame_mapper.h"
+#include "pirouette/camera/camera_model.h"
 #include "pirouette/core/pose2.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/mapping/trinary_map.h"
+#include "pirouette/robot/robot.h"
 #include "pirouette/sim/world.h"
 
 namespace pirouette::app {
@@ -56,7 +59,7 @@ void CheckExplorationOptions(const ExplorationOptions& options);
 
 // Where the wall time of a run went, seconds.
 struct StageTimes {
-  double render_s = 0.0;    // the simulator's camera
+  double render_s = 0.0;    // the simulator's camera (0 for a real robot)
   double perceive_s = 0.0;  // segmentation and obstacle profile
   double update_s = 0.0;    // the occupancy grid
   double plan_s = 0.0;      // configuration space, distance transform, path
@@ -79,9 +82,8 @@ struct ExplorationResult {
   mapping::OccupancyGrid grid{core::GridGeometry(0.01, Eigen::Vector2d::Zero(), 1, 1)};
   std::vector<core::Pose2> path;   // odometry poses after every move, from the start
   std::vector<core::Pose2> stops;  // where the robot pirouetted
-  core::Pose2 final_true_pose;
-  int moves = 0;  // straight moves
-  int turns = 0;  // turns on the spot, pirouettes' included
+  int moves = 0;                   // straight moves
+  int turns = 0;                   // turns on the spot, pirouettes' included
   int pirouettes = 0;
   int frames = 0;
   int blocked_looks = 0;  // looks that found the way blocked
@@ -89,6 +91,8 @@ struct ExplorationResult {
   double path_length_m = 0.0;
   double rotation_deg = 0.0;
   double wall_time_s = 0.0;
+  // The simulator's truth at the end; none for a real robot.
+  std::optional<core::Pose2> final_true_pose;
   StageTimes times;
 };
 
@@ -103,7 +107,28 @@ struct ExplorationProgress {
 struct ExplorationObserver {
   std::function<void(const ExplorationProgress&)> on_progress;
   std::function<void(const FrameEvent&)> on_frame;
+  // Every frame as the robot gave it, with the motions made since the one
+  // before (a run log records them), before it is mapped.
+  std::function<void(const robot::Frame&, const std::vector<robot::MoveOutcome>& motions)>
+      on_capture;
+  // The frame just captured showed a forward move of leg_m blocked (the
+  // mapper confirmed the blocking hits).
+  std::function<void(double leg_m)> on_blocked;
 };
+
+// What the explorer must know of its robot.
+struct RobotDescription {
+  camera::CameraModel camera;
+  double radius_m = 0.0;  // the footprint's disc
+};
+
+// Explores with any robot from where it stands, knowing nothing (the loop of
+// Explore below); the map is in the robot's odometry frame. `mask`
+// segments the robot's frames in order. Throws core::InputError for bad
+// options, and lets the robot's errors through (robot::RobotError...).
+ExplorationResult ExploreWithRobot(robot::Robot& robot, const RobotDescription& description,
+                                   const ExplorationOptions& options, MaskFunction mask,
+                                   const ExplorationObserver& observer = {});
 
 // Explores `world` in the simulator from its robot's start, knowing nothing
 // (Taylor, Geva & Boles 2005, §4): a pirouette, then repeatedly: plan to the
@@ -114,7 +139,9 @@ struct ExplorationObserver {
 ExplorationResult Explore(const sim::World& world, const ExplorationOptions& options,
                           const ExplorationObserver& observer = {});
 
-// The map cell Explore uses for a world by default.
+// The map cell Explore uses by default: 1 cm for a robot of radius under
+// 0.1 m (the paper's), else 2 cm.
+double DefaultCellSize(double robot_radius_m);
 double DefaultCellSize(const sim::World& world);
 
 }  // namespace pirouette::app

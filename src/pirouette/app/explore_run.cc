@@ -1,7 +1,6 @@
 #include "pirouette/app/explore_run.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -15,49 +14,18 @@
 #include "pirouette/app/map_evaluation.h"
 #include "pirouette/app/map_file.h"
 #include "pirouette/app/map_picture.h"
+#include "pirouette/app/progress_line.h"
+#include "pirouette/app/run_log.h"
+#include "pirouette/camera/camera_file.h"
+#include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/robot/remote_robot.h"
 #include "pirouette/sim/world_file.h"
+#include "pirouette/vision/floor_segmenter.h"
 
 namespace pirouette::app {
 namespace {
-
-// The live progress line: rewritten in place on a terminal, a line every few
-// seconds otherwise (a log file).
-class ProgressLine {
- public:
-  explicit ProgressLine(bool quiet) : quiet_(quiet), tty_(isatty(STDERR_FILENO) != 0) {}
-  ~ProgressLine() {
-    if (!quiet_ && tty_ && shown_) std::fputc('\n', stderr);
-  }
-  ProgressLine(const ProgressLine&) = delete;
-  ProgressLine& operator=(const ProgressLine&) = delete;
-
-  void Show(const ExplorationProgress& p) {
-    if (quiet_) return;
-    const double interval = tty_ ? 0.1 : 5.0;
-    if (shown_ && p.elapsed_s - last_s_ < interval) return;
-    last_s_ = p.elapsed_s;
-    shown_ = true;
-    const std::string line =
-        fmt::format("explore: {} moves, {} pirouettes, {:.2f} m² known, {:.1f} s", p.moves,
-                    p.pirouettes, p.known_area_m2, p.elapsed_s);
-    if (tty_) {
-      std::fprintf(stderr, "\r%s\033[K", line.c_str());
-    } else {
-      std::fprintf(stderr, "%s\n", line.c_str());
-    }
-    std::fflush(stderr);
-  }
-
- private:
-  bool quiet_;
-  bool tty_;
-  bool shown_ = false;
-  double last_s_ = 0.0;
-};
-
-constexpr int kMapMarginCells = 5;
 
 double Round(double v, double unit) { return std::round(v / unit) * unit; }
 
@@ -67,7 +35,7 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
                        const nlohmann::json& eval) {
   nlohmann::json run;
   run["format"] = "pirouette-run/1";
-  run["world"] = request.world_path;
+  if (!request.world_path.empty()) run["world"] = request.world_path;
   run["seed"] = request.options.seed;
   run["status"] = result.status;
   if (!result.reason.empty()) run["reason"] = result.reason;
@@ -89,16 +57,74 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
         {Round(p.x(), 1e-4), Round(p.y(), 1e-4), Round(core::RadToDeg(p.heading()), 0.01)});
   };
   if (!result.path.empty()) run["final_pose"] = pose_json(result.path.back());
-  run["final_true_pose"] = pose_json(result.final_true_pose);
+  if (result.final_true_pose) run["final_true_pose"] = pose_json(*result.final_true_pose);
   run["blocked_looks"] = result.blocked_looks;
   run["backups"] = result.backups;
-  run["eval"] = eval;
+  if (!request.robot_url.empty()) run["robot"] = request.robot_url;
+  if (!eval.is_null()) run["eval"] = eval;
   return run;
 }
 
+mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result) {
+  // The map written is the part the robot saw, with a margin.
+  constexpr int kMapMarginCells = 5;
+  const std::filesystem::path out(out_dir);
+  const mapping::OccupancyGrid seen = result.grid.CroppedToKnown(kMapMarginCells);
+  mapping::TrinaryMap map = seen.ToTrinary();
+  WriteRosMap(map, (out / "map.yaml").string());
+  WritePng((out / "map.png").string(), DrawMapPicture(seen, result.path, result.stops));
+  return map;
+}
+
+namespace {
+
+// The robot's camera and size: the options', else the world's.
+RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* world) {
+  if (request.camera_path.empty() && world == nullptr) {
+    throw core::InputError("--camera", 0, "", "a robot without a world needs its camera file");
+  }
+  const double radius =
+      request.radius_m > 0.0 ? request.radius_m : (world ? world->robot().radius : 0.0);
+  if (!(radius > 0.0)) {
+    throw core::InputError("--radius", 0, "", "a robot without a world needs its radius (metres)");
+  }
+  return RobotDescription{request.camera_path.empty() ? world->robot().camera
+                                                      : camera::LoadCameraFile(request.camera_path),
+                          radius};
+}
+
+// Explores through the robot at request.robot_url.
+ExplorationResult ExploreRemote(const ExploreRequest& request, const RobotDescription& robot_info,
+                                const ExplorationObserver& observer) {
+  if (request.options.method == MaskSource::kTruth) {
+    throw core::InputError("--method", 0, "", "the truth is only known in the simulator");
+  }
+  robot::RemoteRobotOptions remote;
+  remote.reply_timeout = std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
+  robot::RemoteRobot robot(request.robot_url, remote);
+  std::unique_ptr<vision::FloorSegmenter> segmenter = vision::MakeFloorSegmenter(
+      request.options.method == MaskSource::kPaper ? vision::SegmentationMethod::kPaper
+                                                   : vision::SegmentationMethod::kDefault,
+      robot_info.camera);
+  return ExploreWithRobot(
+      robot, robot_info, request.options,
+      [&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, observer);
+}
+
+}  // namespace
+
 ExploreReport RunExplore(const ExploreRequest& request) {
-  const sim::World world = sim::LoadWorldFile(request.world_path);
+  std::optional<sim::World> world;
+  if (!request.world_path.empty()) world = sim::LoadWorldFile(request.world_path);
+  if (request.robot_url.empty() && !world) {
+    throw core::InputError("--world", 0, "",
+                           "give a world to explore in the simulator, or --robot");
+  }
+  if (!(request.robot_timeout_s > 0.0) || !std::isfinite(request.robot_timeout_s)) {
+    throw core::InputError("--robot-timeout", 0, "", "must be a number of seconds > 0");
+  }
   CheckExplorationOptions(request.options);
+  const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
   std::error_code error;
   std::filesystem::create_directories(request.out_dir, error);
   if (error) {
@@ -111,20 +137,46 @@ ExploreReport RunExplore(const ExploreRequest& request) {
 
   ProgressLine progress(request.quiet);
   ExplorationObserver observer;
-  observer.on_progress = [&progress](const ExplorationProgress& p) { progress.Show(p); };
+  observer.on_progress = [&progress](const ExplorationProgress& p) {
+    progress.Show(p.elapsed_s, [&] {
+      return fmt::format("explore: {} moves, {} pirouettes, {:.2f} m² known, {:.1f} s", p.moves,
+                         p.pirouettes, p.known_area_m2, p.elapsed_s);
+    });
+  };
   if (video) observer.on_frame = [&video](const FrameEvent& event) { video->AddFrame(event); };
+  std::optional<RunLogWriter> log;
+  if (!request.record_dir.empty()) {
+    RunLogInfo info;
+    info.radius_m = robot_info.radius_m;
+    info.cell_m = request.options.cell_m > 0.0 ? request.options.cell_m
+                                               : DefaultCellSize(robot_info.radius_m);
+    info.max_range_m = request.options.max_range_m > 0.0
+                           ? request.options.max_range_m
+                           : camera::MaxRange(robot_info.camera, info.cell_m);
+    info.method = MaskSourceName(request.options.method);
+    if (request.robot_url.empty()) {
+      info.world = request.world_path;
+      info.seed = request.options.seed;
+    }
+    log.emplace(request.record_dir, robot_info.camera, info);
+    observer.on_capture = [&log](const robot::Frame& frame,
+                                 const std::vector<robot::MoveOutcome>& motions) {
+      log->AddFrame(frame, motions);
+    };
+    observer.on_blocked = [&log](double leg_m) { log->MarkBlocked(leg_m); };
+  }
 
-  ExploreReport report{Explore(world, request.options, observer), {}};
+  ExploreReport report{request.robot_url.empty() ? Explore(*world, request.options, observer)
+                                                 : ExploreRemote(request, robot_info, observer),
+                       {}};
   const ExplorationResult& result = report.result;
 
-  // The map written is the part the robot saw, with a margin.
-  const mapping::OccupancyGrid seen = result.grid.CroppedToKnown(kMapMarginCells);
-  const mapping::TrinaryMap map = seen.ToTrinary();
-  WriteRosMap(map, (out / "map.yaml").string());
-  WritePng((out / "map.png").string(), DrawMapPicture(seen, result.path, result.stops));
-  report.run = RunJson(request, result, MapEvaluationToJson(EvaluateMap(map, world)));
+  const mapping::TrinaryMap map = WriteMapOutputs(out.string(), result);
+  report.run = RunJson(request, result,
+                       world ? MapEvaluationToJson(EvaluateMap(map, *world)) : nlohmann::json());
   WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
+  if (log) log->Close();
   return report;
 }
 

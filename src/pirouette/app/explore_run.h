@@ -15,6 +15,15 @@ struct ExploreRequest {
   ExplorationOptions options;
   bool video = false;
   bool quiet = false;
+  // Non-empty: also write a run log (pirouette-log/1) of the run there.
+  std::string record_dir;
+  // Non-empty: explore with the robot at this tcp://HOST:PORT (the line
+  // protocol, docs/robot-protocol.md) instead of in the simulator; the world,
+  // when given, is then only for the camera, the radius and the evaluation.
+  std::string robot_url;
+  std::string camera_path;        // the robot's camera file (default: the world's)
+  double radius_m = 0.0;          // the robot's radius (default: the world's)
+  double robot_timeout_s = 30.0;  // longest wait for a reply of the robot
 };
 
 // What it made.
@@ -25,13 +34,18 @@ struct ExploreReport {
 
 // Explores the world of the request and writes, atomically, OUT/map.yaml,
 // OUT/map.pgm, OUT/map.png, OUT/run.json (SPEC.md) and with `video`
-// OUT/explore.mp4; the outputs are written whatever the status, so an
-// interrupted or stuck run keeps its map. Progress goes to standard error
-// unless `quiet`. Throws core::InputError for a bad world or option.
+// OUT/explore.mp4, and with `record_dir` a run log; the outputs are written whatever the status, so
+// an interrupted or stuck run keeps its map. Progress goes to standard error unless `quiet`. Throws
+// core::InputError for a bad world or option.
 ExploreReport RunExplore(const ExploreRequest& request);
 
+// Writes OUT/map.yaml, OUT/map.pgm (the part of the result's grid the robot
+// saw, with a margin) and OUT/map.png (with its path and stops), atomically;
+// returns the map written.
+mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result);
+
 // run.json (SPEC.md's `pirouette-run/1`) for a result; `eval` is the map's
-// evaluation object.
+// evaluation object (null: none, no world).
 nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& result,
                        const nlohmann::json& eval);
 

@@ -259,7 +259,8 @@ struct Renderer::Impl {
       : egl(EglContext::Create()), options(opts) {
     width = camera.width();
     height = camera.height();
-    robot_T_camera = camera.robot_T_camera();
+    robot_T_camera =
+        camera.robot_T_camera() * Eigen::AngleAxisd(options.roll_rad, Eigen::Vector3d::UnitZ());
     std::vector<Eigen::Vector2d> rays;
     const Frustum frustum = CoveringFrustum(camera, &rays);
     projection = FrustumProjection(frustum);

@@ -16,6 +16,11 @@ struct RenderOptions {
   double noise_sigma = 2.0;
   // Seeds the sensor noise and the floor's texture.
   std::uint64_t seed = 1;
+  // The camera turned by this angle about its optical axis, radians: the
+  // camera's pose is robot_T_camera() times a rotation of roll_rad about the
+  // camera frame's z. The camera model has no roll (a level mount);
+  // calibration tests use it to vary the board's plane across views.
+  double roll_rad = 0.0;
 };
 
 // There is no usable OpenGL (no EGL display, no context, a shader that does not compile).

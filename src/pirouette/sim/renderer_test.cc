@@ -189,5 +189,72 @@ TEST(RendererTest, SameSeedSameImagesOtherSeedOtherNoise) {
   EXPECT_FALSE(equal(i1, i4));
 }
 
+TEST(RendererTest, ChessboardSquaresAreDarkAndLightWhereTheyLie) {
+  // The paper's camera, higher and looking down steeply.
+  const camera::CameraModel camera("steep", 320, 240, {277.13, 277.13, 159.5, 119.5},
+                                   {-0.20, 0.05, 0.0, 0.0, 0.0}, {0.30, core::DegToRad(60.0), 0.03},
+                                   {{0.35, 0.30, 0.40}});
+  Floor floor{{2.0, 2.0}, core::Rgb{120, 120, 120}, 0.0};
+  const Vector2d robot_xy(1.0, 1.0);
+  Chessboard board;
+  board.centre = robot_xy + Vector2d(0.20, 0.0);
+  board.cols = 5;
+  board.rows = 4;
+  board.square = 0.025;
+  board.yaw_rad = core::DegToRad(20.0);
+  RobotSpec robot{core::Pose2(robot_xy.x(), robot_xy.y(), 0.0), 0.04, camera, {}};
+  const World world("chessboard", floor, std::nullopt, {}, Light{}, robot, {board});
+  EXPECT_TRUE(world.obstacles().empty());
+  EXPECT_TRUE(world.solids().empty());
+  RenderOptions options;
+  options.noise_sigma = 0.0;
+  Renderer renderer(world, camera, options);
+  const core::Pose2 world_T_robot(robot_xy.x(), robot_xy.y(), 0.0);
+  const core::ImageRgb8 image = renderer.Render(world_T_robot);
+
+  const Eigen::Isometry3d camera_T_robot = camera.robot_T_camera().inverse();
+  const auto pixel_of = [&](const Vector2d& p_world) {
+    const Vector2d p_robot = world_T_robot.Inverse() * p_world;
+    return camera.Project(camera_T_robot * Vector3d(p_robot.x(), p_robot.y(), 0.0));
+  };
+  // Square (i, j), i in [0, cols], j in [0, rows], is centred half a square
+  // below and left of inner corner (i, j); the squares with i + j even are dark.
+  // Beyond them, the margin is light and the floor grey.
+  int dark = 0;
+  int light = 0;
+  for (int j = -1; j <= board.rows + 1; ++j) {
+    for (int i = -1; i <= board.cols + 1; ++i) {
+      const Vector2d centre =
+          board.InnerCorner(i, j) - 0.5 * (board.InnerCorner(1, 1) - board.InnerCorner(0, 0));
+      const auto pixel = pixel_of(centre);
+      ASSERT_TRUE(pixel.has_value());
+      const int u = static_cast<int>(std::lround(pixel->x()));
+      const int v = static_cast<int>(std::lround(pixel->y()));
+      ASSERT_TRUE(u >= 0 && u < camera.width() && v >= 0 && v < camera.height())
+          << "square (" << i << ", " << j << ") is out of view";
+      const double value = image.At(u, v).g / camera.VignettingGain(1, *pixel);
+      const bool on_board = i >= 0 && i <= board.cols && j >= 0 && j <= board.rows;
+      if (on_board && (i + j) % 2 == 0) {
+        EXPECT_LT(value, 40.0) << "square (" << i << ", " << j << ")";
+        ++dark;
+      } else {
+        EXPECT_GT(value, 200.0) << "square (" << i << ", " << j << ")";
+        ++light;
+      }
+    }
+  }
+  EXPECT_EQ(dark, 15);
+  EXPECT_EQ(light, 8 * 7 - 15);
+  // Beyond the margin: the floor's grey.
+  const auto beyond = pixel_of(board.centre + Vector2d(0.0, 0.13));
+  ASSERT_TRUE(beyond.has_value());
+  const double grey = image
+                          .At(static_cast<int>(std::lround(beyond->x())),
+                              static_cast<int>(std::lround(beyond->y())))
+                          .g /
+                      camera.VignettingGain(1, *beyond);
+  EXPECT_NEAR(grey, 120.0 * Shade(world.light(), Vector3d::UnitZ()), 4.0);
+}
+
 }  // namespace
 }  // namespace pirouette::sim

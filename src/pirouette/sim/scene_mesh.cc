@@ -44,6 +44,30 @@ class MeshBuilder {
     Triangle(a, c, d, up, colour, textured);
   }
 
+  // The board's squares and its margin, one quad per cell of a
+  // (cols + 3) × (rows + 3) grid (the outer ring is the margin), facing up at
+  // z = kChessboardLift.
+  void Board(const Chessboard& board) {
+    const Eigen::Vector2d along(std::cos(board.yaw_rad), std::sin(board.yaw_rad));
+    const Eigen::Vector2d across(-along.y(), along.x());
+    // The lower left corner of square (0, 0), the board's first square.
+    const Eigen::Vector2d origin = board.centre - board.square * ((board.cols + 1) / 2.0 * along +
+                                                                  (board.rows + 1) / 2.0 * across);
+    const auto at = [&](int i, int j) -> Eigen::Vector3d {
+      const Eigen::Vector2d p = origin + board.square * (i * along + j * across);
+      return {p.x(), p.y(), kChessboardLift};
+    };
+    const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+    for (int j = -1; j <= board.rows + 1; ++j) {
+      for (int i = -1; i <= board.cols + 1; ++i) {
+        const bool on_board = i >= 0 && i <= board.cols && j >= 0 && j <= board.rows;
+        const core::Rgb colour = on_board && (i + j) % 2 == 0 ? board.dark : board.light;
+        Triangle(at(i, j), at(i + 1, j), at(i + 1, j + 1), up, colour, false);
+        Triangle(at(i, j), at(i + 1, j + 1), at(i, j + 1), up, colour, false);
+      }
+    }
+  }
+
   void Prism(const Solid& solid) {
     const auto& poly = solid.footprint;
     const double h = solid.height;
@@ -116,6 +140,7 @@ std::vector<SceneVertex> BuildSceneMesh(const World& world) {
   mesh.GroundRectangle(-e, y, x + e, y + e, kOutsideColour, false);
   mesh.GroundRectangle(-e, 0.0, 0.0, y, kOutsideColour, false);
   mesh.GroundRectangle(x, 0.0, x + e, y, kOutsideColour, false);
+  for (const Chessboard& board : world.chessboards()) mesh.Board(board);
   for (const Solid& solid : world.solids()) mesh.Prism(solid);
   return mesh.Take();
 }

@@ -20,8 +20,14 @@ struct SceneVertex {
 // has no boundary walls): a neutral grey that differs from most floors.
 inline constexpr core::Rgb kOutsideColour{120, 120, 120};
 
-// The world as triangles: the floor, the ground around it, and every solid
-// as a prism (its top and its sides; the bottom is never seen).
+// How far above the floor a chessboard is drawn, so that the depth test never
+// confuses it with the floor beneath (0.2 mm: below what any view resolves,
+// far above the depth buffer's resolution within a few metres).
+inline constexpr double kChessboardLift = 0.0002;
+
+// The world as triangles: the floor, the ground around it, the chessboards
+// (Chessboard: squares and margin, kChessboardLift above the floor), and every
+// solid as a prism (its top and its sides; the bottom is never seen).
 std::vector<SceneVertex> BuildSceneMesh(const World& world);
 
 // Triangulates a simple counter-clockwise polygon by ear clipping; returns

@@ -146,6 +146,12 @@ Solid MakeAlignedBox(Solid::Kind kind, double x0, double y0, double x1, double y
 
 }  // namespace
 
+Eigen::Vector2d Chessboard::InnerCorner(int col, int row) const {
+  const Eigen::Vector2d along(std::cos(yaw_rad), std::sin(yaw_rad));
+  const Eigen::Vector2d across(-along.y(), along.x());
+  return centre + square * ((col - (cols - 1) / 2.0) * along + (row - (rows - 1) / 2.0) * across);
+}
+
 double Solid::SignedDistance(const Eigen::Vector2d& p) const {
   if (circle) return (p - circle->centre).norm() - circle->radius;
   assert(!footprint.empty());
@@ -158,13 +164,21 @@ double Solid::SignedDistance(const Eigen::Vector2d& p) const {
 }
 
 World::World(std::string name, Floor floor, std::optional<BoundaryWalls> walls,
-             std::vector<Solid> obstacles, Light light, RobotSpec robot)
+             std::vector<Solid> obstacles, Light light, RobotSpec robot,
+             std::vector<Chessboard> chessboards)
     : name_(std::move(name)),
       floor_(std::move(floor)),
       walls_(walls),
       obstacles_(std::move(obstacles)),
       light_(std::move(light)),
-      robot_(std::move(robot)) {
+      robot_(std::move(robot)),
+      chessboards_(std::move(chessboards)) {
+  for (const Chessboard& board : chessboards_) {
+    if (board.cols < 2 || board.rows < 2 || !(board.square > 0.0)) {
+      throw std::invalid_argument(
+          "World: a chessboard needs at least 2 × 2 inner corners and a square > 0");
+    }
+  }
   if (!(floor_.size.x() > 0.0) || !(floor_.size.y() > 0.0) || !(robot_.radius >= 0.0) ||
       (walls_ && !(walls_->thickness >= 0.0 && walls_->height >= 0.0))) {
     throw std::invalid_argument(

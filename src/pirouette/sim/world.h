@@ -64,6 +64,25 @@ struct Solid {
 
 inline constexpr int kCylinderSides = 64;
 
+// A printed calibration chessboard lying flat on the floor: `cols` × `rows`
+// inner corners (OpenCV's patternSize), so (cols + 1) × (rows + 1) squares
+// of side `square`, the corner square at its lower left (-x, -y in the board's
+// frame) black, inside a white margin one square wide. `cols` run along the
+// board's yaw direction. It is paper thin: only the renderer draws it; the
+// robot drives over it, and it is no part of the occupancy ground truth.
+struct Chessboard {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();  // the centre of the inner corners' grid
+  int cols = 0;
+  int rows = 0;
+  double square = 0.0;  // metres
+  double yaw_rad = 0.0;
+  core::Rgb dark{20, 20, 20};
+  core::Rgb light{235, 235, 235};
+
+  // The corner (col, row) of the inner grid, col in [0, cols), row in [0, rows), on the floor.
+  Eigen::Vector2d InnerCorner(int col, int row) const;
+};
+
 struct RobotSpec {
   core::Pose2 start;  // world_T_robot at the start
   double radius = 0.0;
@@ -76,7 +95,8 @@ struct RobotSpec {
 class World {
  public:
   World(std::string name, Floor floor, std::optional<BoundaryWalls> walls,
-        std::vector<Solid> obstacles, Light light, RobotSpec robot);
+        std::vector<Solid> obstacles, Light light, RobotSpec robot,
+        std::vector<Chessboard> chessboards = {});
 
   const std::string& name() const { return name_; }
   const Floor& floor() const { return floor_; }
@@ -84,6 +104,8 @@ class World {
   const std::vector<Solid>& obstacles() const { return obstacles_; }
   // The obstacles and the four boundary walls (if any): all that is drawn.
   const std::vector<Solid>& solids() const { return solids_; }
+  // The chessboards on the floor: drawn, but not obstacles (see Chessboard).
+  const std::vector<Chessboard>& chessboards() const { return chessboards_; }
   const Light& light() const { return light_; }
   const RobotSpec& robot() const { return robot_; }
 
@@ -109,6 +131,7 @@ class World {
   std::vector<Solid> solids_;
   Light light_;
   RobotSpec robot_;
+  std::vector<Chessboard> chessboards_;
 };
 
 // Builders for the footprints of the file's shapes (angles in radians).

@@ -203,6 +203,35 @@ BoundaryWalls ReadWalls(const std::string& file, const YamlField& field) {
   return walls;
 }
 
+// True where the item of `obstacles` is a map whose one key is `chessboard`.
+bool IsChessboardItem(const YamlField& field) {
+  return field.node.IsMap() && field.node.size() == 1 && field.node.begin()->first.IsScalar() &&
+         field.node.begin()->first.Scalar() == "chessboard";
+}
+
+// `- chessboard: {centre: [x, y], cols: 9, rows: 6, square: 0.025, yaw: 0}`:
+// cols × rows inner corners, at least 2 × 2.
+Chessboard ReadChessboard(const std::string& file, const YamlField& field) {
+  const YamlMap item(file, field);
+  const YamlField board_field = item.Required("chessboard");
+  const YamlMap map = ReadMap(file, board_field, {"centre", "cols", "rows", "square", "yaw"});
+  Chessboard board;
+  board.centre = ReadPoint(file, map.Required("centre"));
+  for (const auto& [key, value] :
+       {std::pair<const char*, int*>{"cols", &board.cols}, {"rows", &board.rows}}) {
+    const YamlField count_field = map.Required(key);
+    *value = ReadWholeNumber(file, count_field);
+    if (*value < 2 || *value > 100) {
+      ThrowInputError(
+          file, count_field,
+          fmt::format("inner corners of a chessboard: expected 2..100, got {}", *value));
+    }
+  }
+  board.square = ReadPositive(file, map.Required("square"));
+  if (const auto yaw = map.Optional("yaw")) board.yaw_rad = core::DegToRad(ReadNumber(file, *yaw));
+  return board;
+}
+
 // One item of `obstacles`: a map with one key, its shape.
 Solid ReadObstacle(const std::string& file, const YamlField& field) {
   static constexpr std::string_view kShapes[] = {"box", "cylinder", "wall", "prism"};
@@ -214,14 +243,15 @@ Solid ReadObstacle(const std::string& file, const YamlField& field) {
     if (!names.empty()) names += ")";
     ThrowInputError(
         file, field,
-        fmt::format("an obstacle has exactly one key, its shape (box, cylinder, wall or prism); "
+        fmt::format("an obstacle has exactly one key, its shape (box, cylinder, wall, prism or "
+                    "chessboard); "
                     "got {}{}",
                     keys.size(), names));
   }
   const std::string& shape = keys[0].name;
   if (std::find(std::begin(kShapes), std::end(kShapes), shape) == std::end(kShapes)) {
     ThrowInputError(file, keys[0].line, JoinFieldPath(field.path, shape),
-                    "unknown shape (expected box, cylinder, wall or prism)");
+                    "unknown shape (expected box, cylinder, wall, prism or chessboard)");
   }
   const YamlField shape_field = item.Required(shape);
   try {
@@ -373,11 +403,18 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
   if (const auto field = map.Optional("walls")) walls = ReadWalls(file, *field);
 
   std::vector<Solid> obstacles;
+  std::vector<std::size_t> obstacle_items;  // each obstacle's index in the file's list
   std::vector<int> obstacle_lines;
+  std::vector<Chessboard> chessboards;
   if (const auto field = map.Optional("obstacles")) {
     const std::vector<YamlField> items = ReadList(file, *field, "a list of obstacles");
     for (std::size_t i = 0; i < items.size(); ++i) {
+      if (IsChessboardItem(items[i])) {
+        chessboards.push_back(ReadChessboard(file, Index(items[i], i)));
+        continue;
+      }
       obstacles.push_back(ReadObstacle(file, Index(items[i], i)));
+      obstacle_items.push_back(i);
       obstacle_lines.push_back(items[i].line);
     }
   }
@@ -399,7 +436,8 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
   std::optional<World> world;
   try {
     world.emplace(std::move(name), floor, walls, obstacles, light,
-                  RobotSpec{world_T_start, radius, std::move(camera), noise});
+                  RobotSpec{world_T_start, radius, std::move(camera), noise},
+                  std::move(chessboards));
   } catch (const std::invalid_argument& e) {
     ThrowInputError(file, 0, "", e.what());
   }
@@ -418,9 +456,10 @@ World ParseWorld(const YAML::Node& node, const std::string& file) {
     }
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
       if (!(obstacles[i].SignedDistance(centre) > radius)) {
-        ThrowInputError(file, start_field,
-                        fmt::format("{} overlaps obstacles[{}] (the {} on line {})", disc, i,
-                                    ShapeName(obstacles[i].kind), obstacle_lines[i]));
+        ThrowInputError(
+            file, start_field,
+            fmt::format("{} overlaps obstacles[{}] (the {} on line {})", disc, obstacle_items[i],
+                        ShapeName(obstacles[i].kind), obstacle_lines[i]));
       }
     }
     ThrowInputError(file, start_field, disc + " touches something occupied");

@@ -530,7 +530,7 @@ const BadCase kBadCases[] = {
      "  - cylinder: {centre: [1.10, 0.30], radius: 0.05, height: 0.10, colour: [40, 160, 40]}\n"
      "    box: {centre: [1.5, 1.0], size: [0.1, 0.1], height: 0.1, colour: [1, 2, 3]}\n",
      "obstacles[1]", 13,
-     "exactly one key, its shape (box, cylinder, wall or prism); got 2 "
+     "exactly one key, its shape (box, cylinder, wall, prism or chessboard); got 2 "
      "(cylinder, box)"},
     {"ObstacleWithNoShape",
      "  - prism: {points: [[1.0, 1.0], [1.2, 1.0], [1.1, 1.2]], height: "
@@ -683,6 +683,52 @@ TEST(WorldFileTest, SoccerFieldIsThePapersEnvironment) {
   EXPECT_EQ(world.robot().camera.name(), "yujin");
   ASSERT_TRUE(world.walls().has_value());
   EXPECT_EQ(world.walls()->height, 0.10);
+}
+
+TEST(WorldFileTest, ChessboardIsDrawnButNoObstacle) {
+  const TempDir dir;
+  dir.Write("cam.yaml", kCamera);
+  const World world = LoadWorldFile(dir.Write(
+      "world.yaml", EditedWorld("obstacles:\n",
+                                "obstacles:\n  - chessboard: {centre: [1.5, 1.0], cols: 9, "
+                                "rows: 6, square: 0.025, yaw: 90}\n")));
+  ASSERT_EQ(world.chessboards().size(), 1u);
+  const Chessboard& board = world.chessboards()[0];
+  EXPECT_EQ(board.cols, 9);
+  EXPECT_EQ(board.rows, 6);
+  EXPECT_DOUBLE_EQ(board.square, 0.025);
+  EXPECT_NEAR(board.yaw_rad, core::DegToRad(90.0), 1e-12);
+  // Cols run along the yaw (+y here), rows across it (-x).
+  EXPECT_TRUE(board.InnerCorner(0, 0).isApprox(Eigen::Vector2d(1.5 + 0.0625, 1.0 - 0.1), 1e-12));
+  EXPECT_TRUE(board.InnerCorner(8, 5).isApprox(Eigen::Vector2d(1.5 - 0.0625, 1.0 + 0.1), 1e-12));
+  EXPECT_EQ(world.obstacles().size(), 4u);  // the board is none of them
+  EXPECT_FALSE(world.IsOccupied(board.centre));
+  // A start on the board is fine, and the obstacles' indices in messages skip nothing.
+  dir.Write("world2.yaml", EditedWorld("obstacles:\n",
+                                       "obstacles:\n  - chessboard: {centre: "
+                                       "[0.2, 0.2], cols: 3, rows: 2, square: 0.1}\n"));
+  EXPECT_EQ(LoadWorldFile((dir.path() / "world2.yaml").string()).chessboards().size(), 1u);
+}
+
+TEST(WorldFileTest, RefusesBadChessboards) {
+  const TempDir dir;
+  dir.Write("cam.yaml", kCamera);
+  const auto error_for = [&dir](const std::string& board) {
+    const std::string path = dir.Write(
+        "world.yaml", EditedWorld("obstacles:\n", "obstacles:\n  - chessboard: " + board + "\n"));
+    return ExpectInputError([&path] { LoadWorldFile(path); });
+  };
+  const auto bad_rows = error_for("{centre: [1, 1], cols: 9, rows: 1, square: 0.02}");
+  EXPECT_EQ(bad_rows.line(), 12);
+  EXPECT_EQ(bad_rows.field(), "obstacles[0].chessboard.rows");
+  EXPECT_EQ(error_for("{centre: [1, 1], cols: 9.5, rows: 6, square: 0.02}").field(),
+            "obstacles[0].chessboard.cols");
+  EXPECT_EQ(error_for("{centre: [1, 1], cols: 9, rows: 6, square: -0.02}").field(),
+            "obstacles[0].chessboard.square");
+  EXPECT_EQ(error_for("{centre: [1, 1], cols: 9, rows: 6}").field(),
+            "obstacles[0].chessboard.square");
+  EXPECT_EQ(error_for("{centre: [1, 1], cols: 9, rows: 6, square: 0.02, size: 3}").field(),
+            "obstacles[0].chessboard.size");
 }
 
 }  // namespace

@@ -1,0 +1,46 @@
+#include <memory>
+#include <string>
+
+#include "apps/pirouette/command.h"
+#include "pirouette/app/log_mapping.h"
+
+namespace pirouette::cli {
+
+Command AddMapCommand(CLI::App& parent) {
+  auto request = std::make_shared<app::MapLogRequest>();
+  CLI::App* cmd = parent.add_subcommand(
+      "map",
+      "Build the map of a recorded run (a pirouette-log/1 folder, as `explore --record DIR` "
+      "writes one or a script on a real robot does; docs/run-log.md): each frame is segmented "
+      "and its obstacle profile put in the occupancy grid at its odometry, in order, exactly as "
+      "the run did. Writes OUT/map.yaml + map.pgm, map.png and run.json (with the map's "
+      "evaluation when the log's world, or --world, is known). The settings default to the "
+      "log's own (log.yaml).\n"
+      "Exit: 0 done, 1 failed, 2 bad input.\n"
+      "  example: pirouette explore --world worlds/soccer_field.yaml --record run1 && "
+      "pirouette map --log run1 --out map1");
+  cmd->add_option("--log", request->log_dir, "the run log's folder")->required();
+  cmd->add_option("--out", request->out_dir, "output folder")->capture_default_str();
+  cmd->add_option("--world", request->world_path,
+                  "world file to evaluate the map against (default: the log's, if it exists)");
+  cmd->add_option("--radius", request->radius_m,
+                  "the robot's radius, metres (default: the log's robot.radius)");
+  cmd->add_option("--cell", request->cell_m, "map cell, metres (default: the log's)");
+  cmd->add_option("--max-range", request->max_range_m,
+                  "trust readings out to this range, metres (default: the log's, else the "
+                  "paper's rule)");
+  cmd->add_option("--method", request->method,
+                  "floor segmentation: default or paper (default: the log's)")
+      ->check(CLI::IsMember({"default", "paper"}));
+  cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
+  return {cmd, [request] {
+            const app::MapLogReport report = app::RunMapLog(*request);
+            if (!request->quiet) {
+              std::fprintf(stderr, "map: %d frames in %.1f s; map in %s/map.yaml\n",
+                           report.result.frames, report.result.wall_time_s,
+                           request->out_dir.c_str());
+            }
+          }};
+}
+
+}  // namespace pirouette::cli

@@ -1,0 +1,130 @@
+#include "pirouette/app/log_mapping.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "pirouette/app/atomic_file.h"
+#include "pirouette/app/explore_run.h"
+#include "pirouette/app/frame_mapper.h"
+#include "pirouette/app/map_evaluation.h"
+#include "pirouette/app/progress_line.h"
+#include "pirouette/app/run_log.h"
+#include "pirouette/camera/range_resolution.h"
+#include "pirouette/core/input_error.h"
+#include "pirouette/sim/world_file.h"
+#include "pirouette/vision/floor_segmenter.h"
+
+namespace pirouette::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double Round(double v, double unit) { return std::round(v / unit) * unit; }
+
+vision::SegmentationMethod MethodOf(const std::string& name, const std::string& source) {
+  if (name.empty() || name == "default") return vision::SegmentationMethod::kDefault;
+  if (name == "paper") return vision::SegmentationMethod::kPaper;
+  throw core::InputError(source, 0, "method", "'" + name + "': the method is default or paper");
+}
+
+}  // namespace
+
+MapLogReport RunMapLog(const MapLogRequest& request) {
+  const RunLog log = ReadRunLog(request.log_dir);
+  const std::string log_yaml = (fs::path(request.log_dir) / "log.yaml").string();
+
+  MapperSetup setup{log.camera};
+  setup.radius_m = request.radius_m > 0.0 ? request.radius_m : log.info.radius_m;
+  if (!(setup.radius_m > 0.0)) {
+    throw core::InputError(log_yaml, 0, "robot.radius",
+                           "the log does not give the robot's radius: give --radius");
+  }
+  setup.cell_m = request.cell_m > 0.0    ? request.cell_m
+                 : log.info.cell_m > 0.0 ? log.info.cell_m
+                                         : DefaultCellSize(setup.radius_m);
+  setup.max_range_m = request.max_range_m > 0.0    ? request.max_range_m
+                      : log.info.max_range_m > 0.0 ? log.info.max_range_m
+                                                   : camera::MaxRange(setup.camera, setup.cell_m);
+  setup.occupancy = ExplorationOptions{}.occupancy;
+  const std::string method_name = request.method.empty() ? log.info.method : request.method;
+  const vision::SegmentationMethod method =
+      MethodOf(method_name, request.method.empty() ? log_yaml : "--method");
+
+  // The world for the evaluation: the one asked for, else the log's when it
+  // is still where it was.
+  std::optional<sim::World> world;
+  std::string world_path = request.world_path;
+  if (!world_path.empty()) {
+    world = sim::LoadWorldFile(world_path);
+  } else if (!log.info.world.empty() && fs::exists(log.info.world)) {
+    world_path = log.info.world;
+    world = sim::LoadWorldFile(world_path);
+  }
+
+  std::error_code error;
+  fs::create_directories(request.out_dir, error);
+  if (error) {
+    throw core::InputError(request.out_dir, 0, "--out",
+                           "cannot create the output folder: " + error.message());
+  }
+
+  const Clock::time_point start = Clock::now();
+  std::unique_ptr<vision::FloorSegmenter> segmenter =
+      vision::MakeFloorSegmenter(method, setup.camera);
+  FrameMapper mapper(
+      setup, [&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); },
+      log.rows.front().odometry);
+  MapLogReport report;
+  ExplorationResult& result = report.result;
+  ProgressLine progress(request.quiet);
+  for (const RunLogRow& row : log.rows) {
+    const robot::Frame frame = ReadLogFrame(log, row);
+    if (row.contact) mapper.AddContact(row.odometry);
+    const FrameMapper::Seen seen = mapper.AddFrame(frame);
+    if (row.blocked_leg_m) mapper.ConfirmBlocking(seen.profile, row.odometry, *row.blocked_leg_m);
+    ++result.frames;
+    if (result.path.empty() ||
+        (result.path.back().translation() - row.odometry.translation()).norm() > 1e-9) {
+      if (!result.path.empty()) {
+        result.path_length_m +=
+            (result.path.back().translation() - row.odometry.translation()).norm();
+      }
+      result.path.push_back(row.odometry);
+    }
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    progress.Show(elapsed, [&] {
+      return fmt::format("map: frame {} of {}, {:.1f} s", result.frames, log.rows.size(), elapsed);
+    });
+  }
+  result.status = "complete";
+  result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
+  result.times.perceive_s = mapper.perceive_s();
+  result.times.update_s = mapper.update_s();
+  result.grid = mapper.TakeGrid();
+
+  const mapping::TrinaryMap map = WriteMapOutputs(request.out_dir, result);
+  nlohmann::json& run = report.run;
+  run["format"] = "pirouette-run/1";
+  run["source"] = "log";
+  run["log"] = request.log_dir;
+  if (world) run["world"] = world_path;
+  run["status"] = result.status;
+  run["method"] = method == vision::SegmentationMethod::kPaper ? "paper" : "default";
+  run["frames"] = result.frames;
+  run["path_length_m"] = Round(result.path_length_m, 1e-4);
+  run["wall_time_s"] = Round(result.wall_time_s, 1e-3);
+  run["time_per_frame_s"] = Round(result.wall_time_s / result.frames, 1e-5);
+  run["stage_time_s"] = {{"perceive", Round(result.times.perceive_s, 1e-4)},
+                         {"update", Round(result.times.update_s, 1e-4)}};
+  if (world) run["eval"] = MapEvaluationToJson(EvaluateMap(map, *world));
+  WriteFileAtomically((fs::path(request.out_dir) / "run.json").string(), run.dump(2) + "\n");
+  return report;
+}
+
+}  // namespace pirouette::app
