@@ -5,7 +5,7 @@ line protocol (docs/robot-protocol.md), for you to adapt.
 Run it on the robot (or on a computer that talks to it), then, from the
 computer that runs pirouette:
 
-    pirouette explore --robot tcp://ROBOT_HOST:5555 --camera my_camera.yaml
+    pirouette explore --robot tcp://ROBOT_HOST:5555 --camera my_camera.yaml --radius 0.15
 
 Try it without hardware first: `--fake` simulates odometry and answers every
 CAPTURE with a plain grey frame, so the protocol can be watched end to end:
@@ -158,7 +158,8 @@ class Session:
             try:
                 reply = self.answer(words)
             except (ValueError, RuntimeError, NotImplementedError) as error:
-                reply = f"ERR {words[0]} failed: {error}\n".replace("\r", " ")
+                message = str(error).replace("\r", " ").replace("\n", " ")
+                reply = f"ERR {words[0]} failed: {message}\n"
             if reply is not None:
                 self.send(reply)
 

@@ -21,6 +21,7 @@
 
 #include "pirouette/app/explore_run.h"
 #include "pirouette/robot/fake_robot.h"
+#include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
@@ -102,6 +103,34 @@ TEST_F(RemoteExploreTest, SimServeGivesTheSameMapAsInProcess) {
   EXPECT_EQ(over_tcp.run["robot"], remote.robot_url);
 }
 
+// Serves a robot on a thread for the life of the object: stopped and joined
+// however the test ends.
+class Serving {
+ public:
+  explicit Serving(robot::Robot& robot) : server_(robot, Options()) {
+    thread_ = std::thread([this] { server_.Serve(); });
+  }
+  ~Serving() {
+    server_.Stop();
+    thread_.join();
+  }
+  Serving(const Serving&) = delete;
+  Serving& operator=(const Serving&) = delete;
+
+  std::string Url() const { return "tcp://127.0.0.1:" + std::to_string(server_.port()); }
+
+ private:
+  static robot::RobotServerOptions Options() {
+    robot::RobotServerOptions options;
+    options.port = 0;
+    options.write_timeout = std::chrono::milliseconds(2000);
+    return options;
+  }
+
+  robot::RobotServer server_;
+  std::thread thread_;
+};
+
 // A fake robot that stops answering after a number of frames, until released.
 class HangingRobot : public robot::FakeRobot {
  public:
@@ -135,23 +164,22 @@ class HangingRobot : public robot::FakeRobot {
 // hangs in its second pirouette's worth of frames.
 TEST_F(RemoteExploreTest, RobotThatStopsAnsweringEndsTheRunStuckWithTheMapSoFar) {
   HangingRobot robot(320, 240, 5);
-  robot::RobotServerOptions server_options;
-  server_options.port = 0;
-  server_options.write_timeout = std::chrono::milliseconds(2000);
-  robot::RobotServer server(robot, server_options);
-  std::thread serving([&] { server.Serve(); });
+  // Released before the server stops, however the test ends.
+  struct Release {
+    HangingRobot& robot;
+    ~Release() { robot.Release(); }
+  };
+  Serving serving(robot);
+  const Release release{robot};
 
   ExploreRequest request;
-  request.robot_url = "tcp://127.0.0.1:" + std::to_string(server.port());
+  request.robot_url = serving.Url();
   request.camera_path = World("yujin.yaml");
   request.radius_m = 0.04;
   request.robot_timeout_s = 0.3;
   request.out_dir = (dir_ / "out").string();
   request.quiet = true;
   const ExploreReport report = RunExplore(request);
-  robot.Release();
-  server.Stop();
-  serving.join();
 
   EXPECT_EQ(report.result.status, "stuck");
   EXPECT_NE(report.result.reason.find("did not answer"), std::string::npos) << report.result.reason;
@@ -165,24 +193,53 @@ TEST_F(RemoteExploreTest, RobotThatStopsAnsweringEndsTheRunStuckWithTheMapSoFar)
 TEST_F(RemoteExploreTest, RobotThatRefusesACommandEndsTheRunStuck) {
   robot::FakeRobot robot(320, 240);
   robot.fail_capture = true;
-  robot::RobotServerOptions server_options;
-  server_options.port = 0;
-  robot::RobotServer server(robot, server_options);
-  std::thread serving([&] { server.Serve(); });
+  Serving serving(robot);
 
   ExploreRequest request;
-  request.robot_url = "tcp://127.0.0.1:" + std::to_string(server.port());
+  request.robot_url = serving.Url();
   request.camera_path = World("yujin.yaml");
   request.radius_m = 0.04;
   request.out_dir = (dir_ / "out").string();
   request.quiet = true;
   const ExploreReport report = RunExplore(request);
-  server.Stop();
-  serving.join();
 
   EXPECT_EQ(report.result.status, "stuck");
   EXPECT_NE(report.result.reason.find("unplugged"), std::string::npos) << report.result.reason;
   EXPECT_TRUE(fs::exists(dir_ / "out" / "map.yaml"));
+}
+
+// A robot whose frames are not the camera file's size answers garbage for
+// this run: the run ends "stuck" saying so, before any frame is mapped.
+TEST_F(RemoteExploreTest, FramesOfAnotherSizeThanTheCameraEndTheRunStuck) {
+  robot::FakeRobot robot(640, 480);
+  Serving serving(robot);
+
+  ExploreRequest request;
+  request.robot_url = serving.Url();
+  request.camera_path = World("yujin.yaml");  // 320 x 240
+  request.radius_m = 0.04;
+  request.out_dir = (dir_ / "out").string();
+  request.quiet = true;
+  const ExploreReport report = RunExplore(request);
+
+  EXPECT_EQ(report.result.status, "stuck");
+  EXPECT_NE(report.result.reason.find("640x480"), std::string::npos) << report.result.reason;
+  EXPECT_EQ(report.result.frames, 0);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "map.yaml"));
+}
+
+// A robot that is not there: a clear error, and no output folder half made.
+TEST_F(RemoteExploreTest, NoRobotThereIsAnErrorBeforeAnyOutput) {
+  ExploreRequest request;
+  request.robot_url = "tcp://127.0.0.1:1";  // nothing serves port 1
+  request.camera_path = World("yujin.yaml");
+  request.radius_m = 0.04;
+  request.out_dir = (dir_ / "out").string();
+  request.record_dir = (dir_ / "log").string();
+  request.quiet = true;
+  EXPECT_THROW(RunExplore(request), robot::RobotError);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  EXPECT_FALSE(fs::exists(dir_ / "log"));
 }
 
 }  // namespace

@@ -7,7 +7,6 @@
 #include "pirouette/app/explore_run.h"
 
 namespace pirouette::cli {
-namespace {}  // namespace
 
 Command AddExploreCommand(CLI::App& parent) {
   auto request = std::make_shared<app::ExploreRequest>();
@@ -79,6 +78,10 @@ Command AddExploreCommand(CLI::App& parent) {
                            request->out_dir.c_str());
             }
             if (status == "stuck") throw std::runtime_error("stuck: " + report.result.reason);
+            if (!report.record_error.empty()) {
+              throw std::runtime_error("the run log in " + request->record_dir +
+                                       " is incomplete: " + report.record_error);
+            }
             if (status == "interrupted") {
               throw std::runtime_error("interrupted; the map so far is in " + request->out_dir);
             }

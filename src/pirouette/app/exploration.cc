@@ -15,6 +15,7 @@
 #include "pirouette/app/frame_mapper.h"
 #include "pirouette/app/look_ahead.h"
 #include "pirouette/app/simulated_robot.h"
+#include "pirouette/app/stage_timer.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
@@ -31,19 +32,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-
-// Adds the time from construction to destruction to a counter.
-class StageTimer {
- public:
-  explicit StageTimer(double& total) : total_(total), start_(Clock::now()) {}
-  ~StageTimer() { total_ += Seconds(Clock::now() - start_); }
-  StageTimer(const StageTimer&) = delete;
-  StageTimer& operator=(const StageTimer&) = delete;
-
- private:
-  double& total_;
-  Clock::time_point start_;
-};
 
 // The loop of one exploration, through any robot.
 class Explorer {
@@ -208,6 +196,7 @@ class Explorer {
   void Pirouette() {
     const int turns = options_.pirouette_turns;
     for (int i = 0; i < turns; ++i) {
+      if (Interrupted()) return;  // a real robot's pirouette takes a while
       Look();
       Turn(2.0 * std::numbers::pi / turns);
     }
@@ -497,8 +486,6 @@ std::optional<PlannerKind> ParsePlannerKind(std::string_view name) {
 }
 
 double DefaultCellSize(double robot_radius_m) { return robot_radius_m < 0.1 ? 0.01 : 0.02; }
-
-double DefaultCellSize(const sim::World& world) { return DefaultCellSize(world.robot().radius); }
 
 void CheckExplorationOptions(const ExplorationOptions& options) {
   try {

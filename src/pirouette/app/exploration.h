@@ -142,6 +142,5 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
 // The map cell Explore uses by default: 1 cm for a robot of radius under
 // 0.1 m (the paper's), else 2 cm.
 double DefaultCellSize(double robot_radius_m);
-double DefaultCellSize(const sim::World& world);
 
 }  // namespace pirouette::app

@@ -93,15 +93,24 @@ RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* 
                           radius};
 }
 
-// Explores through the robot at request.robot_url.
-ExplorationResult ExploreRemote(const ExploreRequest& request, const RobotDescription& robot_info,
-                                const ExplorationObserver& observer) {
+// Connects to the robot at request.robot_url (before any output is made,
+// so that a robot that is not there leaves nothing behind).
+std::unique_ptr<robot::RemoteRobot> ConnectRobot(const ExploreRequest& request,
+                                                 const RobotDescription& robot_info) {
   if (request.options.method == MaskSource::kTruth) {
     throw core::InputError("--method", 0, "", "the truth is only known in the simulator");
   }
   robot::RemoteRobotOptions remote;
   remote.reply_timeout = std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
-  robot::RemoteRobot robot(request.robot_url, remote);
+  remote.frame_width = robot_info.camera.width();
+  remote.frame_height = robot_info.camera.height();
+  return std::make_unique<robot::RemoteRobot>(request.robot_url, remote);
+}
+
+// Explores through a connected robot.
+ExplorationResult ExploreRemote(robot::RemoteRobot& robot, const ExploreRequest& request,
+                                const RobotDescription& robot_info,
+                                const ExplorationObserver& observer) {
   std::unique_ptr<vision::FloorSegmenter> segmenter = vision::MakeFloorSegmenter(
       request.options.method == MaskSource::kPaper ? vision::SegmentationMethod::kPaper
                                                    : vision::SegmentationMethod::kDefault,
@@ -120,11 +129,16 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     throw core::InputError("--world", 0, "",
                            "give a world to explore in the simulator, or --robot");
   }
-  if (!(request.robot_timeout_s > 0.0) || !std::isfinite(request.robot_timeout_s)) {
-    throw core::InputError("--robot-timeout", 0, "", "must be a number of seconds > 0");
+  if (!(request.robot_timeout_s > 0.0) || request.robot_timeout_s > 3600.0) {
+    throw core::InputError("--robot-timeout", 0, "", "must be a number of seconds in (0, 3600]");
+  }
+  if (request.radius_m < 0.0 || !std::isfinite(request.radius_m)) {
+    throw core::InputError("--radius", 0, "", "must be a number > 0 (metres)");
   }
   CheckExplorationOptions(request.options);
   const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
+  std::unique_ptr<robot::RemoteRobot> remote;
+  if (!request.robot_url.empty()) remote = ConnectRobot(request, robot_info);
   std::error_code error;
   std::filesystem::create_directories(request.out_dir, error);
   if (error) {
@@ -145,6 +159,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   };
   if (video) observer.on_frame = [&video](const FrameEvent& event) { video->AddFrame(event); };
   std::optional<RunLogWriter> log;
+  std::string record_error;
   if (!request.record_dir.empty()) {
     RunLogInfo info;
     info.radius_m = robot_info.radius_m;
@@ -159,24 +174,41 @@ ExploreReport RunExplore(const ExploreRequest& request) {
       info.seed = request.options.seed;
     }
     log.emplace(request.record_dir, robot_info.camera, info);
-    observer.on_capture = [&log](const robot::Frame& frame,
-                                 const std::vector<robot::MoveOutcome>& motions) {
-      log->AddFrame(frame, motions);
+    // A log that cannot be written (a full disk) stops recording, not the
+    // run: the map is worth more than the log.
+    observer.on_capture = [&log, &record_error](const robot::Frame& frame,
+                                                const std::vector<robot::MoveOutcome>& motions) {
+      if (!record_error.empty()) return;
+      try {
+        log->AddFrame(frame, motions);
+      } catch (const std::exception& e) {
+        record_error = e.what();
+      }
     };
     observer.on_blocked = [&log](double leg_m) { log->MarkBlocked(leg_m); };
   }
 
-  ExploreReport report{request.robot_url.empty() ? Explore(*world, request.options, observer)
-                                                 : ExploreRemote(request, robot_info, observer),
+  ExploreReport report{request.robot_url.empty()
+                           ? Explore(*world, request.options, observer)
+                           : ExploreRemote(*remote, request, robot_info, observer),
+                       {},
                        {}};
   const ExplorationResult& result = report.result;
+  if (log && record_error.empty()) {
+    try {
+      log->Close();
+    } catch (const std::exception& e) {
+      record_error = e.what();
+    }
+  }
+  report.record_error = record_error;
 
   const mapping::TrinaryMap map = WriteMapOutputs(out.string(), result);
   report.run = RunJson(request, result,
                        world ? MapEvaluationToJson(EvaluateMap(map, *world)) : nlohmann::json());
+  if (!record_error.empty()) report.run["record_error"] = record_error;
   WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
-  if (log) log->Close();
   return report;
 }
 

@@ -30,6 +30,8 @@ struct ExploreRequest {
 struct ExploreReport {
   ExplorationResult result;
   nlohmann::json run;  // run.json's content
+  // Why the run log stopped being written, if it did (the run went on).
+  std::string record_error;
 };
 
 // Explores the world of the request and writes, atomically, OUT/map.yaml,

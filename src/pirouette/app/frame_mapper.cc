@@ -1,29 +1,14 @@
 #include "pirouette/app/frame_mapper.h"
 
-#include <chrono>
 #include <cmath>
 #include <utility>
 
 #include "pirouette/app/image_io.h"
+#include "pirouette/app/stage_timer.h"
 #include "pirouette/mapping/range_sensor_model.h"
 
 namespace pirouette::app {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Adds the time from construction to destruction to a counter.
-class StageTimer {
- public:
-  explicit StageTimer(double& total) : total_(total), start_(Clock::now()) {}
-  ~StageTimer() { total_ += std::chrono::duration<double>(Clock::now() - start_).count(); }
-  StageTimer(const StageTimer&) = delete;
-  StageTimer& operator=(const StageTimer&) = delete;
-
- private:
-  double& total_;
-  Clock::time_point start_;
-};
 
 // 2 m square around the start, on whole cells.
 mapping::OccupancyGrid InitialGrid(const core::Pose2& start, double cell_m,

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "pirouette/app/atomic_file.h"
 #include "pirouette/app/explore_run.h"
@@ -28,18 +29,28 @@ using Clock = std::chrono::steady_clock;
 double Round(double v, double unit) { return std::round(v / unit) * unit; }
 
 vision::SegmentationMethod MethodOf(const std::string& name, const std::string& source) {
-  if (name.empty() || name == "default") return vision::SegmentationMethod::kDefault;
-  if (name == "paper") return vision::SegmentationMethod::kPaper;
-  throw core::InputError(source, 0, "method", "'" + name + "': the method is default or paper");
+  if (name.empty()) return vision::SegmentationMethod::kDefault;
+  const std::optional<vision::SegmentationMethod> method = vision::ParseSegmentationMethod(name);
+  if (!method) {
+    throw core::InputError(source, 0, "method", "'" + name + "': the method is default or paper");
+  }
+  return *method;
 }
 
 }  // namespace
 
 MapLogReport RunMapLog(const MapLogRequest& request) {
+  for (const auto& [value, option] :
+       {std::pair{request.radius_m, "--radius"}, std::pair{request.cell_m, "--cell"},
+        std::pair{request.max_range_m, "--max-range"}}) {
+    if (value < 0.0 || !std::isfinite(value)) {
+      throw core::InputError(option, 0, "", "must be a number > 0 (metres)");
+    }
+  }
   const RunLog log = ReadRunLog(request.log_dir);
   const std::string log_yaml = (fs::path(request.log_dir) / "log.yaml").string();
 
-  MapperSetup setup{log.camera};
+  MapperSetup setup{log.camera, 0.0, 0.0, 0.0, ExplorationOptions{}.occupancy};
   setup.radius_m = request.radius_m > 0.0 ? request.radius_m : log.info.radius_m;
   if (!(setup.radius_m > 0.0)) {
     throw core::InputError(log_yaml, 0, "robot.radius",
@@ -51,7 +62,18 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   setup.max_range_m = request.max_range_m > 0.0    ? request.max_range_m
                       : log.info.max_range_m > 0.0 ? log.info.max_range_m
                                                    : camera::MaxRange(setup.camera, setup.cell_m);
-  setup.occupancy = ExplorationOptions{}.occupancy;
+  // The same bounds as explore's options, named where the value came from.
+  const auto check = [&](double value, double lo, double hi, double asked, const char* option,
+                         const char* field) {
+    if (!(value >= lo && value <= hi)) {
+      throw core::InputError(asked > 0.0 ? option : log_yaml, 0, asked > 0.0 ? "" : field,
+                             fmt::format("{} is out of range: between {} and {}", value, lo, hi));
+    }
+  };
+  check(setup.radius_m, 0.005, 5.0, request.radius_m, "--radius", "robot.radius");
+  check(setup.cell_m, 0.002, 0.5, request.cell_m, "--cell", "map.cell");
+  check(setup.max_range_m, setup.cell_m, 100.0, request.max_range_m, "--max-range",
+        "map.max_range");
   const std::string method_name = request.method.empty() ? log.info.method : request.method;
   const vision::SegmentationMethod method =
       MethodOf(method_name, request.method.empty() ? log_yaml : "--method");
@@ -115,7 +137,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   run["log"] = request.log_dir;
   if (world) run["world"] = world_path;
   run["status"] = result.status;
-  run["method"] = method == vision::SegmentationMethod::kPaper ? "paper" : "default";
+  run["method"] = vision::SegmentationMethodName(method);
   run["frames"] = result.frames;
   run["path_length_m"] = Round(result.path_length_m, 1e-4);
   run["wall_time_s"] = Round(result.wall_time_s, 1e-3);

@@ -15,6 +15,7 @@
 #include "pirouette/camera/camera_file.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/robot/line_protocol.h"
+#include "pirouette/robot/robot_error.h"
 
 namespace pirouette::app {
 namespace {
@@ -77,7 +78,12 @@ RunLogInfo ReadInfo(const std::string& path) {
   if (const YAML::Node source = root["source"]) {
     if (source["world"]) info.world = source["world"].as<std::string>("");
     if (source["seed"]) {
-      info.seed = static_cast<std::uint64_t>(number(source["seed"], "source.seed"));
+      try {
+        info.seed = source["seed"].as<std::uint64_t>();
+      } catch (const YAML::Exception&) {
+        throw core::InputError(path, source["seed"].Mark().line + 1, "source.seed",
+                               "must be a whole number >= 0");
+      }
     }
   }
   return info;
@@ -208,10 +214,14 @@ RunLog ReadRunLog(const std::string& dir) {
     }
     row.index = static_cast<int>(index);
     row.time_s = ParseNumber(f[1], csv_path, line_no, "time_s");
-    ParseNumber(f[4], csv_path, line_no, "heading_deg");  // checks it, with the line
-    row.odometry =
-        core::Pose2(ParseNumber(f[2], csv_path, line_no, "x"),
-                    ParseNumber(f[3], csv_path, line_no, "y"), robot::ParseDegrees(f[4]));
+    double heading_rad = 0.0;
+    try {
+      heading_rad = robot::ParseDegrees(f[4]);  // bit-exact back to the radians written
+    } catch (const robot::RobotError&) {
+      throw core::InputError(csv_path, line_no, "heading_deg", "'" + f[4] + "' is not a number");
+    }
+    row.odometry = core::Pose2(ParseNumber(f[2], csv_path, line_no, "x"),
+                               ParseNumber(f[3], csv_path, line_no, "y"), heading_rad);
     if (f.size() > 5) {
       row.motion = f[5];
       const std::size_t last = row.motion.rfind(';');

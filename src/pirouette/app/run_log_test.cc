@@ -7,6 +7,7 @@
 #include <fstream>
 #include <string>
 
+#include "pirouette/app/log_mapping.h"
 #include "pirouette/camera/camera_file.h"
 #include "pirouette/core/input_error.h"
 
@@ -104,6 +105,29 @@ TEST_F(RunLogTest, BadLogsAreRefusedNamingFileLineAndField) {
   EXPECT_THROW(ReadLogFrame(log, log.rows[0]), core::InputError);  // no image
   std::ofstream(dir_ / "log.yaml") << "format: something-else\n";
   EXPECT_THROW(ReadRunLog(dir_.string()), core::InputError);
+}
+
+TEST_F(RunLogTest, MapRefusesACellOutOfRange) {
+  const camera::CameraModel camera = TestCamera();
+  RunLogInfo info;
+  info.radius_m = 0.04;
+  info.cell_m = 1e-9;
+  {
+    RunLogWriter writer(dir_.string(), camera, info);
+    writer.AddFrame(GreyFrame(camera, core::Pose2(0.2, 0.3, 0.0), 0.0), {});
+  }
+  MapLogRequest request;
+  request.log_dir = dir_.string();
+  request.out_dir = (dir_ / "out").string();
+  request.quiet = true;
+  try {
+    RunMapLog(request);
+    FAIL() << "a 1e-9 m cell was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.field(), "map.cell");
+  }
+  request.cell_m = -1.0;
+  EXPECT_THROW(RunMapLog(request), core::InputError);
 }
 
 }  // namespace

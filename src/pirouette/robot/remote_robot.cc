@@ -79,12 +79,14 @@ RemoteRobot::RemoteRobot(const RobotAddress& address, const RemoteRobotOptions& 
   ParseReply(hello, Ask(hello), ParseHelloReply);
   const Request odometry = Request::Odometry();
   odometry_ = ParseReply(odometry, Ask(odometry), ParseOdometryReply);
+  CheckOdometry(odometry_, "ODOM");
 }
 
 MoveOutcome RemoteRobot::Execute(const Move& move) {
   const Request request = Request::FromMove(move);
   MoveOutcome outcome = ParseReply(
       request, Ask(request), [&move](std::string_view line) { return ParseMoveReply(line, move); });
+  CheckOdometry(outcome.odometry, CommandName(request.kind));
   odometry_ = outcome.odometry;
   return outcome;
 }
@@ -92,6 +94,16 @@ MoveOutcome RemoteRobot::Execute(const Move& move) {
 Frame RemoteRobot::Capture() {
   const Request request = Request::Capture();
   const FrameHeader header = ParseReply(request, Ask(request), ParseFrameHeader);
+  // Checked before the bytes are read (or memory taken for them).
+  if (header.width == 0 || header.height == 0) {
+    Fail(fmt::format("answered CAPTURE with an empty {}x{} frame", header.width, header.height));
+  }
+  if (options_.frame_width > 0 &&
+      (header.width != options_.frame_width || header.height != options_.frame_height)) {
+    Fail(fmt::format("answered CAPTURE with a {}x{} frame; the camera file's frames are {}x{}",
+                     header.width, header.height, options_.frame_width, options_.frame_height));
+  }
+  CheckOdometry(header.odometry, "CAPTURE");
   Frame frame;
   frame.image = core::ImageRgb8(header.width, header.height);
   frame.odometry = header.odometry;
@@ -142,6 +154,14 @@ std::string RemoteRobot::Ask(const Request& request) {
     Fail(fmt::format("refused {}: {}", command, *message));
   }
   return reply.text;
+}
+
+void RemoteRobot::CheckOdometry(const core::Pose2& odometry, std::string_view command) {
+  if (std::abs(odometry.x()) > options_.max_odometry_m ||
+      std::abs(odometry.y()) > options_.max_odometry_m) {
+    Fail(fmt::format("answered {} with odometry ({}, {}) m, farther than {} m from its origin",
+                     command, odometry.x(), odometry.y(), options_.max_odometry_m));
+  }
 }
 
 void RemoteRobot::Fail(const std::string& what) {

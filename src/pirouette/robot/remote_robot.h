@@ -30,6 +30,11 @@ struct RemoteRobotOptions {
   std::chrono::milliseconds reply_timeout{30000};
   // How long connecting may take.
   std::chrono::milliseconds connect_timeout{10000};
+  // The size frames must have (the camera file's); 0: any size but empty.
+  int frame_width = 0;
+  int frame_height = 0;
+  // Odometry farther than this from its origin (metres) is not a robot's.
+  double max_odometry_m = 1e4;
 };
 
 // A robot driven over TCP with the line protocol (line_protocol.h,
@@ -62,6 +67,8 @@ class RemoteRobot : public Robot {
   std::string Ask(const Request& request);
   // Closes the connection and throws RobotError "the robot at HOST:PORT <what>".
   [[noreturn]] void Fail(const std::string& what);
+  // Fails for odometry too far from its origin to be a robot's.
+  void CheckOdometry(const core::Pose2& odometry, std::string_view command);
   // Parses a reply with `parse`, turning its errors into Fail.
   template <typename Parse>
   auto ParseReply(const Request& request, const std::string& line, Parse parse);
