@@ -1,6 +1,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
@@ -50,6 +51,21 @@ Command AddExploreCommand(CLI::App& parent) {
                   "camera and cell)");
   cmd->add_flag("--return-home", request->options.return_home,
                 "drive back to the start when the map is complete");
+  auto noise = std::make_shared<std::vector<double>>();
+  auto bias = std::make_shared<std::vector<double>>();
+  CLI::Option* noise_option =
+      cmd->add_option("--odometry-noise", *noise,
+                      "T,R: the simulator's motion error, standard deviations as fractions of "
+                      "each straight move's length and each turn's angle (default: the world "
+                      "file's odometry_noise)")
+          ->delimiter(',')
+          ->expected(2);
+  CLI::Option* bias_option =
+      cmd->add_option("--odometry-bias", *bias,
+                      "T,R: a constant error added to those fractions (wheels that drift one "
+                      "way), e.g. 0.02,-0.01 (default: the world file's)")
+          ->delimiter(',')
+          ->expected(2);
   cmd->add_flag("--video", request->video, "also write OUT/explore.mp4");
   cmd->add_option("--robot", request->robot_url,
                   "explore with a robot that speaks the line protocol at tcp://HOST:PORT "
@@ -67,7 +83,9 @@ Command AddExploreCommand(CLI::App& parent) {
                   "also write a run log (pirouette-log/1: camera.yaml, frames/, frames.csv) in "
                   "this new folder; `pirouette map --log DIR` maps it again");
   cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
-  return {cmd, [request, planner, method] {
+  return {cmd, [request, planner, method, noise, bias, noise_option, bias_option] {
+            if (noise_option->count() > 0) request->odometry_noise = {(*noise)[0], (*noise)[1]};
+            if (bias_option->count() > 0) request->odometry_bias = {(*bias)[0], (*bias)[1]};
             request->options.planner = *app::ParsePlannerKind(*planner);
             request->options.method = *app::ParseMaskSource(*method);
             request->options.stop_requested = StopOnInterrupt();

@@ -1,14 +1,16 @@
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
+#include "pirouette/app/atomic_file.h"
 #include "pirouette/app/simulated_robot.h"
+#include "pirouette/core/input_error.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
 #include "pirouette/sim/world_file.h"
@@ -22,30 +24,33 @@ struct SimServeRequest {
   int port = 5555;
   std::uint64_t seed = 1;
   std::string port_file;
+  std::vector<double> odometry_noise;  // {} or {translation, rotation}
+  std::vector<double> odometry_bias;   // {} or {translation, rotation}
 };
-
-// Writes the port and a newline to `path` atomically (a temporary name, then
-// a rename), so that a script polling for the file never reads half of it.
-void WritePortFile(const std::string& path, int port) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::trunc);
-    out << port << '\n';
-    if (!out.flush()) throw std::runtime_error("cannot write the port file " + temporary);
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    throw std::runtime_error("cannot write the port file " + path + ": " + error.message());
-  }
-}
 
 // The simulated robot exactly as the in-process explorer builds it
 // (app::SimulatedRobot), so that a run through sim-serve sees the same frames
 // and the same motion as one in-process with the same world and seed.
 void Serve(const SimServeRequest& request) {
   const sim::World world = sim::LoadWorldFile(request.world_path);
-  app::SimulatedRobot simulated(world, request.seed);
+  sim::OdometryNoise noise = world.robot().odometry_noise;
+  if (request.odometry_noise.size() == 2) {
+    noise.translation = request.odometry_noise[0];
+    noise.rotation = request.odometry_noise[1];
+  }
+  if (request.odometry_bias.size() == 2) {
+    noise.translation_bias = request.odometry_bias[0];
+    noise.rotation_bias = request.odometry_bias[1];
+  }
+  if (!(noise.translation >= 0.0 && noise.translation <= 1.0 && noise.rotation >= 0.0 &&
+        noise.rotation <= 1.0)) {
+    throw core::InputError("--odometry-noise", 0, "",
+                           "the standard deviations are fractions in [0, 1]");
+  }
+  if (!(std::abs(noise.translation_bias) <= 0.5 && std::abs(noise.rotation_bias) <= 0.5)) {
+    throw core::InputError("--odometry-bias", 0, "", "the biases are fractions in [-0.5, 0.5]");
+  }
+  app::SimulatedRobot simulated(world, request.seed, noise);
   robot::Robot& robot = simulated.robot();
 
   robot::RobotServerOptions options;
@@ -56,7 +61,9 @@ void Serve(const SimServeRequest& request) {
     std::fprintf(stderr, "sim-serve: %s\n", message.c_str());
   };
   robot::RobotServer server(robot, options);
-  if (!request.port_file.empty()) WritePortFile(request.port_file, server.port());
+  if (!request.port_file.empty()) {
+    app::WriteFileAtomically(request.port_file, std::to_string(server.port()) + "\n");
+  }
   std::fprintf(stderr, "sim-serve: listening on %s (world %s, seed %llu); Ctrl-C stops\n",
                server.address().c_str(), request.world_path.c_str(),
                static_cast<unsigned long long>(request.seed));
@@ -84,6 +91,15 @@ Command AddSimServeCommand(CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--seed", request->seed, "seed of the simulator's noise (camera and odometry)")
       ->capture_default_str();
+  cmd->add_option("--odometry-noise", request->odometry_noise,
+                  "T,R: the motion error's standard deviations (as explore's; default: the "
+                  "world file's)")
+      ->delimiter(',')
+      ->expected(2);
+  cmd->add_option("--odometry-bias", request->odometry_bias,
+                  "T,R: the motion error's biases (as explore's; default: the world file's)")
+      ->delimiter(',')
+      ->expected(2);
   cmd->add_option("--port-file", request->port_file,
                   "once listening, write the port to this file (atomically), for scripts");
   return {cmd, [request] {

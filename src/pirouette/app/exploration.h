@@ -49,6 +49,8 @@ struct ExplorationOptions {
   mapping::OccupancyOptions occupancy{.hit_probability = 0.8, .miss_probability = 0.18};
   // Drive back to the start at the end.
   bool return_home = false;
+  // The simulator's motion error; none: the world file's odometry_noise.
+  std::optional<sim::OdometryNoise> odometry_noise;
   // Checked between steps; when it becomes true the run ends with status
   // "interrupted" and the map so far.
   const std::atomic<bool>* stop_requested = nullptr;

@@ -135,7 +135,20 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   if (request.radius_m < 0.0 || !std::isfinite(request.radius_m)) {
     throw core::InputError("--radius", 0, "", "must be a number > 0 (metres)");
   }
-  CheckExplorationOptions(request.options);
+  ExplorationOptions options = request.options;
+  if (world && (request.odometry_noise || request.odometry_bias)) {
+    sim::OdometryNoise noise = world->robot().odometry_noise;
+    if (request.odometry_noise) {
+      noise.translation = (*request.odometry_noise)[0];
+      noise.rotation = (*request.odometry_noise)[1];
+    }
+    if (request.odometry_bias) {
+      noise.translation_bias = (*request.odometry_bias)[0];
+      noise.rotation_bias = (*request.odometry_bias)[1];
+    }
+    options.odometry_noise = noise;
+  }
+  CheckExplorationOptions(options);
   const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
   std::unique_ptr<robot::RemoteRobot> remote;
   if (!request.robot_url.empty()) remote = ConnectRobot(request, robot_info);
@@ -189,7 +202,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   }
 
   ExploreReport report{request.robot_url.empty()
-                           ? Explore(*world, request.options, observer)
+                           ? Explore(*world, options, observer)
                            : ExploreRemote(*remote, request, robot_info, observer),
                        {},
                        {}};
@@ -207,6 +220,13 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   report.run = RunJson(request, result,
                        world ? MapEvaluationToJson(EvaluateMap(map, *world)) : nlohmann::json());
   if (!record_error.empty()) report.run["record_error"] = record_error;
+  if (request.robot_url.empty()) {
+    const sim::OdometryNoise noise = options.odometry_noise.value_or(world->robot().odometry_noise);
+    report.run["odometry_noise"] = {{"translation", noise.translation},
+                                    {"rotation", noise.rotation},
+                                    {"translation_bias", noise.translation_bias},
+                                    {"rotation_bias", noise.rotation_bias}};
+  }
   WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
   return report;

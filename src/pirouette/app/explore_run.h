@@ -1,7 +1,9 @@
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "pirouette/app/exploration.h"
@@ -24,6 +26,11 @@ struct ExploreRequest {
   std::string camera_path;        // the robot's camera file (default: the world's)
   double radius_m = 0.0;          // the robot's radius (default: the world's)
   double robot_timeout_s = 30.0;  // longest wait for a reply of the robot
+  // The simulator's motion error, overriding the world file's: standard
+  // deviations {translation, rotation} and biases {translation, rotation},
+  // as fractions of each move (sim::OdometryNoise).
+  std::optional<std::array<double, 2>> odometry_noise;
+  std::optional<std::array<double, 2>> odometry_bias;
 };
 
 // What it made.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "pirouette/sim/renderer.h"
 #include "pirouette/sim/sim_robot.h"
@@ -15,7 +16,9 @@ namespace pirouette::app {
 // `seed`. Holds a reference to the world; renders on the constructing thread.
 class SimulatedRobot {
  public:
-  SimulatedRobot(const sim::World& world, std::uint64_t seed);
+  // `noise`: the motion error; none: the world file's.
+  SimulatedRobot(const sim::World& world, std::uint64_t seed,
+                 const std::optional<sim::OdometryNoise>& noise = std::nullopt);
   SimulatedRobot(const SimulatedRobot&) = delete;
   SimulatedRobot& operator=(const SimulatedRobot&) = delete;
 

@@ -171,8 +171,11 @@ double StandardNormal(std::mt19937_64& rng) {
 }  // namespace
 
 SimRobot::SimRobot(const World& world, std::uint64_t seed, View view)
+    : SimRobot(world, seed, std::move(view), world.robot().odometry_noise) {}
+
+SimRobot::SimRobot(const World& world, std::uint64_t seed, View view, const OdometryNoise& noise)
     : world_(world),
-      noise_(world.robot().odometry_noise),
+      noise_(noise),
       view_(std::move(view)),
       rng_(seed),
       world_T_robot_(world.robot().start),
@@ -186,7 +189,7 @@ robot::MoveOutcome SimRobot::Execute(const robot::Move& move) {
   robot::MoveOutcome outcome;
   outcome.requested = move;
   if (move.kind == robot::Move::Kind::kTurn) {
-    const double epsilon = noise_.rotation * StandardNormal(rng_);
+    const double epsilon = noise_.rotation_bias + noise_.rotation * StandardNormal(rng_);
     const double true_angle = move.amount * (1.0 + epsilon);
     world_T_robot_ =
         core::Pose2(world_T_robot_.x(), world_T_robot_.y(), world_T_robot_.heading() + true_angle);
@@ -195,7 +198,7 @@ robot::MoveOutcome SimRobot::Execute(const robot::Move& move) {
     outcome.achieved = move.amount;
     time_s_ += std::abs(true_angle) / kTurnSpeed;
   } else {
-    const double epsilon = noise_.translation * StandardNormal(rng_);
+    const double epsilon = noise_.translation_bias + noise_.translation * StandardNormal(rng_);
     const double scale = 1.0 + epsilon;  // true distance per encoder distance
     const double true_signed = move.amount * scale;
     const Eigen::Vector2d u = (true_signed < 0.0 ? -1.0 : 1.0) * world_T_robot_.Direction();

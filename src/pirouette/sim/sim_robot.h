@@ -12,8 +12,9 @@ namespace pirouette::sim {
 // The simulated robot: the paper's piecewise-linear motion in a World, with
 // the world's odometry noise, and frames from a view function (the renderer).
 //
-// Motion model: a turn by θ turns the body by θ·(1 + ε_r), a straight move by
-// d drives it d·(1 + ε_t) along its heading, ε_r ~ N(0, σ_r), ε_t ~ N(0, σ_t)
+// Motion model: a turn by θ turns the body by θ·(1 + b_r + ε_r), a straight
+// move by d drives it d·(1 + b_t + ε_t) along its heading (b: the biases of
+// OdometryNoise), ε_r ~ N(0, σ_r), ε_t ~ N(0, σ_t)
 // drawn per move from a generator seeded with `seed`; odometry reports the
 // commanded motion (what the wheel encoders believe). A straight move that
 // would make the robot's disc touch an obstacle, a wall or the floor's edge
@@ -25,6 +26,8 @@ class SimRobot : public robot::Robot {
   using View = std::function<core::ImageRgb8(const core::Pose2& world_T_robot)>;
 
   SimRobot(const World& world, std::uint64_t seed, View view);
+  // The same with another motion error than the world file's.
+  SimRobot(const World& world, std::uint64_t seed, View view, const OdometryNoise& noise);
 
   robot::MoveOutcome Execute(const robot::Move& move) override;
   robot::Frame Capture() override;

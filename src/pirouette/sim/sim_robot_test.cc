@@ -227,6 +227,26 @@ TEST(SimRobotTest, ContactWithNoiseReportsTheEncoderDistance) {
   EXPECT_NEAR(robot.Odometry().x(), 0.5 + outcome.achieved, 1e-12);
 }
 
+// Wheels that drift one way: the body moves and turns by the bias more than
+// the encoders say, every time.
+TEST(SimRobotTest, BiasesScaleEveryMoveTheSameWay) {
+  OdometryNoise noise;
+  noise.translation_bias = 0.02;
+  noise.rotation_bias = -0.05;
+  const World world = BoxWorld(noise, core::Pose2(0.3, 0.3, 0.0));
+  SimRobot robot(world, 1, EmptyView());
+  robot.Execute(Move::Straight(0.2));
+  ExpectPose(robot.TruePose(), 0.3 + 0.2 * 1.02, 0.3, 0.0);
+  ExpectPose(robot.Odometry(), 0.5, 0.3, 0.0);
+  robot.Execute(Move::Turn(1.0));
+  EXPECT_NEAR(robot.TruePose().heading(), 0.95, 1e-12);
+  EXPECT_NEAR(robot.Odometry().heading(), 1.0, 1e-12);
+  // The world file's noise can be overridden.
+  SimRobot exact(world, 1, EmptyView(), OdometryNoise{});
+  exact.Execute(Move::Straight(0.2));
+  ExpectPose(exact.TruePose(), 0.5, 0.3, 0.0);
+}
+
 TEST(SimRobotTest, TranslationNoiseStatistics) {
   constexpr int kMoves = 2000;
   constexpr double kSigma = 0.05;

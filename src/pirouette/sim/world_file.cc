@@ -357,12 +357,23 @@ camera::CameraModel ReadCamera(const std::string& file, const YamlField& field) 
 }
 
 OdometryNoise ReadOdometryNoise(const std::string& file, const YamlField& field) {
-  const YamlMap map = ReadMap(file, field, {"translation", "rotation"});
+  const YamlMap map =
+      ReadMap(file, field, {"translation", "rotation", "translation_bias", "rotation_bias"});
   OdometryNoise noise;
   if (const auto value = map.Optional("translation")) {
     noise.translation = ReadNonNegative(file, *value);
   }
   if (const auto value = map.Optional("rotation")) noise.rotation = ReadNonNegative(file, *value);
+  const auto read_bias = [&](const YamlField& value) {
+    const double bias = ReadNumber(file, value);
+    if (!(std::abs(bias) <= 0.5)) {
+      ThrowInputError(file, value, fmt::format("must lie in [-0.5, 0.5], got {}", bias));
+    }
+    return bias;
+  };
+  if (const auto value = map.Optional("translation_bias"))
+    noise.translation_bias = read_bias(*value);
+  if (const auto value = map.Optional("rotation_bias")) noise.rotation_bias = read_bias(*value);
   return noise;
 }
 

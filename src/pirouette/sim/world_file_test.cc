@@ -296,6 +296,21 @@ TEST(WorldFileTest, CameraPathMayBeAbsolute) {
   EXPECT_EQ(world.robot().camera.name(), "test");
 }
 
+TEST(WorldFileTest, ReadsOdometryBiasesAndRefusesLargeOnes) {
+  const TempDir dir;
+  dir.Write("cam.yaml", kCamera);
+  const World world = LoadWorldFile(
+      dir.Write("world.yaml", EditedWorld("    rotation: 0.02\n",
+                                          "    rotation: 0.02\n    translation_bias: 0.03\n"
+                                          "    rotation_bias: -0.01\n")));
+  EXPECT_EQ(world.robot().odometry_noise.translation_bias, 0.03);
+  EXPECT_EQ(world.robot().odometry_noise.rotation_bias, -0.01);
+  EXPECT_THROW(LoadWorldFile(dir.Write("bad.yaml", EditedWorld("    rotation: 0.02\n",
+                                                               "    rotation: 0.02\n"
+                                                               "    rotation_bias: 0.7\n"))),
+               core::InputError);
+}
+
 TEST(WorldFileTest, CameraMayBeInline) {
   const TempDir dir;
   const World world = LoadWorldFile(dir.Write(
