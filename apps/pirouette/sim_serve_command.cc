@@ -1,7 +1,8 @@
-#include <cmath>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -10,7 +11,6 @@
 #include "apps/pirouette/interrupt.h"
 #include "pirouette/app/atomic_file.h"
 #include "pirouette/app/simulated_robot.h"
-#include "pirouette/core/input_error.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
 #include "pirouette/sim/world_file.h"
@@ -33,23 +33,12 @@ struct SimServeRequest {
 // and the same motion as one in-process with the same world and seed.
 void Serve(const SimServeRequest& request) {
   const sim::World world = sim::LoadWorldFile(request.world_path);
-  sim::OdometryNoise noise = world.robot().odometry_noise;
-  if (request.odometry_noise.size() == 2) {
-    noise.translation = request.odometry_noise[0];
-    noise.rotation = request.odometry_noise[1];
-  }
-  if (request.odometry_bias.size() == 2) {
-    noise.translation_bias = request.odometry_bias[0];
-    noise.rotation_bias = request.odometry_bias[1];
-  }
-  if (!(noise.translation >= 0.0 && noise.translation <= 1.0 && noise.rotation >= 0.0 &&
-        noise.rotation <= 1.0)) {
-    throw core::InputError("--odometry-noise", 0, "",
-                           "the standard deviations are fractions in [0, 1]");
-  }
-  if (!(std::abs(noise.translation_bias) <= 0.5 && std::abs(noise.rotation_bias) <= 0.5)) {
-    throw core::InputError("--odometry-bias", 0, "", "the biases are fractions in [-0.5, 0.5]");
-  }
+  const auto pair = [](const std::vector<double>& v) {
+    return v.size() == 2 ? std::optional<std::array<double, 2>>({v[0], v[1]}) : std::nullopt;
+  };
+  const sim::OdometryNoise noise = app::OdometryNoiseWith(
+      world.robot().odometry_noise, pair(request.odometry_noise), pair(request.odometry_bias));
+  app::CheckOdometryNoise(noise);
   app::SimulatedRobot simulated(world, request.seed, noise);
   robot::Robot& robot = simulated.robot();
 

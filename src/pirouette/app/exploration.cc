@@ -503,16 +503,7 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   if (options.max_range_m < 0.0 || !std::isfinite(options.max_range_m)) {
     throw core::InputError("--max-range", 0, "", "must be a number > 0 (metres)");
   }
-  if (options.odometry_noise) {
-    const sim::OdometryNoise& n = *options.odometry_noise;
-    if (!(n.translation >= 0.0 && n.translation <= 1.0 && n.rotation >= 0.0 && n.rotation <= 1.0)) {
-      throw core::InputError("--odometry-noise", 0, "",
-                             "the standard deviations are fractions in [0, 1]");
-    }
-    if (!(std::abs(n.translation_bias) <= 0.5 && std::abs(n.rotation_bias) <= 0.5)) {
-      throw core::InputError("--odometry-bias", 0, "", "the biases are fractions in [-0.5, 0.5]");
-    }
-  }
+  if (options.odometry_noise) CheckOdometryNoise(*options.odometry_noise);
   if (options.pirouette_turns < 4 || options.pirouette_turns > 72) {
     throw core::InputError("--turns", 0, "", "a pirouette has between 4 and 72 turns");
   }

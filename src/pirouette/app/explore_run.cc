@@ -16,6 +16,7 @@
 #include "pirouette/app/map_picture.h"
 #include "pirouette/app/progress_line.h"
 #include "pirouette/app/run_log.h"
+#include "pirouette/app/simulated_robot.h"
 #include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
@@ -137,16 +138,8 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   }
   ExplorationOptions options = request.options;
   if (world && (request.odometry_noise || request.odometry_bias)) {
-    sim::OdometryNoise noise = world->robot().odometry_noise;
-    if (request.odometry_noise) {
-      noise.translation = (*request.odometry_noise)[0];
-      noise.rotation = (*request.odometry_noise)[1];
-    }
-    if (request.odometry_bias) {
-      noise.translation_bias = (*request.odometry_bias)[0];
-      noise.rotation_bias = (*request.odometry_bias)[1];
-    }
-    options.odometry_noise = noise;
+    options.odometry_noise = OdometryNoiseWith(world->robot().odometry_noise,
+                                               request.odometry_noise, request.odometry_bias);
   }
   CheckExplorationOptions(options);
   const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);

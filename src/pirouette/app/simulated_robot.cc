@@ -1,8 +1,37 @@
 #include "pirouette/app/simulated_robot.h"
 
 #include <chrono>
+#include <cmath>
+
+#include "pirouette/core/input_error.h"
 
 namespace pirouette::app {
+
+sim::OdometryNoise OdometryNoiseWith(const sim::OdometryNoise& base,
+                                     const std::optional<std::array<double, 2>>& deviations,
+                                     const std::optional<std::array<double, 2>>& biases) {
+  sim::OdometryNoise noise = base;
+  if (deviations) {
+    noise.translation = (*deviations)[0];
+    noise.rotation = (*deviations)[1];
+  }
+  if (biases) {
+    noise.translation_bias = (*biases)[0];
+    noise.rotation_bias = (*biases)[1];
+  }
+  return noise;
+}
+
+void CheckOdometryNoise(const sim::OdometryNoise& noise) {
+  if (!(noise.translation >= 0.0 && noise.translation <= 1.0 && noise.rotation >= 0.0 &&
+        noise.rotation <= 1.0)) {
+    throw core::InputError("--odometry-noise", 0, "",
+                           "the standard deviations are fractions in [0, 1]");
+  }
+  if (!(std::abs(noise.translation_bias) <= 0.5 && std::abs(noise.rotation_bias) <= 0.5)) {
+    throw core::InputError("--odometry-bias", 0, "", "the biases are fractions in [-0.5, 0.5]");
+  }
+}
 
 sim::RenderOptions SimulatedRobot::RenderOptionsFor(std::uint64_t seed) {
   sim::RenderOptions options;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -8,6 +9,17 @@
 #include "pirouette/sim/world.h"
 
 namespace pirouette::app {
+
+// The command line's motion error: `base` (a world file's) with the standard
+// deviations {translation, rotation} and the biases {translation, rotation}
+// given, each where given.
+sim::OdometryNoise OdometryNoiseWith(const sim::OdometryNoise& base,
+                                     const std::optional<std::array<double, 2>>& deviations,
+                                     const std::optional<std::array<double, 2>>& biases);
+
+// Throws core::InputError naming --odometry-noise (deviations outside
+// [0, 1]) or --odometry-bias (biases outside [-0.5, 0.5]).
+void CheckOdometryNoise(const sim::OdometryNoise& noise);
 
 // The simulated robot of a world, built the one way every command builds it
 // (explore in-process, sim-serve over TCP), so that the same world and seed
