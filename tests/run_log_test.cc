@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -64,6 +65,41 @@ TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
   EXPECT_EQ(mapped.run["eval"], explored.run["eval"]);
   EXPECT_TRUE(fs::exists(dir_ / "map" / "map.png"));
   EXPECT_TRUE(fs::exists(dir_ / "map" / "run.json"));
+}
+
+}  // namespace
+}  // namespace pirouette::app
+
+namespace pirouette::app {
+namespace {
+
+// With pose tracking and odometry noise the log records `localize: scan`,
+// and mapping it again tracks the same way: the same map.
+TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
+  ExploreRequest explore;
+  explore.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml";
+  explore.out_dir = (dir_ / "explore").string();
+  explore.record_dir = (dir_ / "log").string();
+  explore.quiet = true;
+  explore.options.localize = LocalizeKind::kScan;
+  explore.odometry_noise = std::array<double, 2>{0.05, 0.05};
+  const ExploreReport explored = RunExplore(explore);
+  EXPECT_EQ(explored.run["localize"], "scan");
+  EXPECT_EQ(ReadRunLog(explore.record_dir).info.localize, "scan");
+
+  MapLogRequest map;
+  map.log_dir = explore.record_dir;
+  map.out_dir = (dir_ / "map").string();
+  map.quiet = true;
+  RunMapLog(map);
+  EXPECT_EQ(ReadAll(dir_ / "map" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
+  EXPECT_EQ(ReadAll(dir_ / "map" / "map.yaml"), ReadAll(dir_ / "explore" / "map.yaml"));
+
+  // Mapped again without tracking, the same frames make another map.
+  map.out_dir = (dir_ / "untracked").string();
+  map.localize = "none";
+  RunMapLog(map);
+  EXPECT_NE(ReadAll(dir_ / "untracked" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
 }
 
 }  // namespace

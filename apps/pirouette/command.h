@@ -34,5 +34,7 @@ Command AddMapCommand(CLI::App& parent);
 Command AddCalibrateCommand(CLI::App& parent);
 Command AddCaptureCommand(CLI::App& parent);
 Command AddSimServeCommand(CLI::App& parent);
+Command AddPlacesCommand(CLI::App& parent);
+Command AddLocateCommand(CLI::App& parent);
 
 }  // namespace pirouette::cli

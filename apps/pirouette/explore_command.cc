@@ -13,6 +13,7 @@ Command AddExploreCommand(CLI::App& parent) {
   auto request = std::make_shared<app::ExploreRequest>();
   auto planner = std::make_shared<std::string>("dt");
   auto method = std::make_shared<std::string>("default");
+  auto localize = std::make_shared<std::string>("none");
   CLI::App* cmd = parent.add_subcommand(
       "explore",
       "Drop the robot (simulated, or a real one with --robot) into a world knowing nothing and let "
@@ -43,6 +44,12 @@ Command AddExploreCommand(CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--method", *method, "floor segmentation: default or paper")
       ->check(CLI::IsMember({"default", "paper"}))
+      ->capture_default_str();
+  cmd->add_option("--localize", *localize,
+                  "none: trust the odometry; scan: correct it at every frame by matching what "
+                  "the camera sees against the map so far (experimental: see the README's "
+                  "localization figures before relying on it)")
+      ->check(CLI::IsMember({"scan", "none"}))
       ->capture_default_str();
   cmd->add_option("--cell", request->options.cell_m,
                   "map cell, metres (default: 0.01 for a robot under 0.1 m radius, else 0.02)");
@@ -83,7 +90,8 @@ Command AddExploreCommand(CLI::App& parent) {
                   "also write a run log (pirouette-log/1: camera.yaml, frames/, frames.csv) in "
                   "this new folder; `pirouette map --log DIR` maps it again");
   cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
-  return {cmd, [request, planner, method, noise, bias, noise_option, bias_option] {
+  return {cmd, [request, planner, method, localize, noise, bias, noise_option, bias_option] {
+            request->options.localize = *app::ParseLocalizeKind(*localize);
             if (noise_option->count() > 0) request->odometry_noise = {(*noise)[0], (*noise)[1]};
             if (bias_option->count() > 0) request->odometry_bias = {(*bias)[0], (*bias)[1]};
             request->options.planner = *app::ParsePlannerKind(*planner);

@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
       AddEvalCommand(app),        AddExploreCommand(app),
       AddExploreEvalCommand(app), AddMapCommand(app),
       AddCalibrateCommand(app),   AddCaptureCommand(app),
-      AddSimServeCommand(app),
+      AddSimServeCommand(app),    AddPlacesCommand(app),
+      AddLocateCommand(app),
   };
 
   try {

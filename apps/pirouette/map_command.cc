@@ -32,6 +32,9 @@ Command AddMapCommand(CLI::App& parent) {
   cmd->add_option("--method", request->method,
                   "floor segmentation: default or paper (default: the log's)")
       ->check(CLI::IsMember({"default", "paper"}));
+  cmd->add_option("--localize", request->localize,
+                  "pose tracking: scan or none (default: the log's, else none)")
+      ->check(CLI::IsMember({"scan", "none"}));
   cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
   return {cmd, [request] {
             const app::MapLogReport report = app::RunMapLog(*request);

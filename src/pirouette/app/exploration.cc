@@ -48,7 +48,10 @@ class Explorer {
             MapperSetup{description.camera, description.radius_m, cell_m_,
                         options.max_range_m > 0.0 ? options.max_range_m
                                                   : camera::MaxRange(description.camera, cell_m_),
-                        options.occupancy},
+                        options.occupancy,
+                        options.localize == LocalizeKind::kScan
+                            ? std::optional<localize::TrackerOptions>(options.tracker)
+                            : std::nullopt},
             std::move(mask), robot.Odometry()),
         look_(mapper_.look_ahead()),
         start_(Clock::now()) {
@@ -73,6 +76,11 @@ class Explorer {
     result_.wall_time_s = Seconds(Clock::now() - start_);
     result_.times.perceive_s = mapper_.perceive_s();
     result_.times.update_s = mapper_.update_s();
+    result_.times.localize_s = mapper_.localize_s();
+    if (mapper_.tracker()) {
+      result_.corrections = mapper_.tracker()->accepted();
+      result_.matches = mapper_.tracker()->matches();
+    }
     result_.grid = mapper_.TakeGrid();
     return std::move(result_);
   }
@@ -83,7 +91,7 @@ class Explorer {
   static constexpr int kMaxIdlePlans = 500;
 
   void Loop() {
-    start_pose_ = robot_.Odometry();
+    start_pose_ = Pose();
     result_.path.push_back(start_pose_);
     Pirouette();
     int failures = 0;  // plans in a row that could not be followed
@@ -102,7 +110,7 @@ class Explorer {
       std::optional<explore::Plan> plan;
       {
         StageTimer timer(result_.times.plan_s);
-        plan = planner_->Next(PlanningMap(), robot_.Odometry());
+        plan = planner_->Next(PlanningMap(), Pose());
       }
       if (!plan) {
         if (!StepAwayToSeeNearby()) result_.status = "complete";
@@ -139,6 +147,9 @@ class Explorer {
     }
   }
 
+  // Where the robot is in the map: its odometry, corrected by the tracker.
+  core::Pose2 Pose() const { return mapper_.ToMap(robot_.Odometry()); }
+
   bool Interrupted() {
     if (options_.stop_requested != nullptr && options_.stop_requested->load()) {
       result_.status = "interrupted";
@@ -155,9 +166,9 @@ class Explorer {
     if (observer_.on_capture) observer_.on_capture(frame, motions_since_frame_);
     motions_since_frame_.clear();
     last_seen_ = mapper_.AddFrame(frame);
-    last_seen_pose_ = frame.odometry;
+    result_.frame_poses.push_back(last_seen_.pose);
     if (observer_.on_frame) {
-      observer_.on_frame({last_seen_.bgr, last_seen_.mask, frame.odometry, mapper_.grid()});
+      observer_.on_frame({last_seen_.bgr, last_seen_.mask, last_seen_.pose, mapper_.grid()});
     }
     return last_seen_;
   }
@@ -181,7 +192,7 @@ class Explorer {
     const robot::MoveOutcome outcome = Execute(robot::Move::Straight(metres));
     ++result_.moves;
     result_.path_length_m += std::abs(outcome.achieved);
-    result_.path.push_back(outcome.odometry);
+    result_.path.push_back(mapper_.ToMap(outcome.odometry));
     if (outcome.stopped_at_contact) {
       mapper_.AddContact(outcome.odometry);
       Look();
@@ -201,8 +212,8 @@ class Explorer {
       Turn(2.0 * std::numbers::pi / turns);
     }
     ++result_.pirouettes;
-    result_.stops.push_back(robot_.Odometry());
-    last_pirouette_ = robot_.Odometry().translation();
+    result_.stops.push_back(Pose());
+    last_pirouette_ = Pose().translation();
     Report();
   }
 
@@ -212,7 +223,7 @@ class Explorer {
     for (const Eigen::Vector2d& target : MergeCollinear(plan.waypoints_world)) {
       while (true) {
         if (!result_.status.empty() || Interrupted()) return FollowOutcome::kStopped;
-        const core::Pose2 pose = robot_.Odometry();
+        const core::Pose2 pose = Pose();
         const Eigen::Vector2d to = target - pose.translation();
         const double distance = to.norm();
         if (distance < 0.25 * cell_m_) break;
@@ -223,14 +234,13 @@ class Explorer {
         const LookVerdict verdict = finding.verdict;
         if (verdict == LookVerdict::kBlind &&
             !CorridorKnownFree(mapper_.grid().ToExploredMap(), pose.translation(),
-                               pose.translation() + leg * robot_.Odometry().Direction(),
-                               radius_m_)) {
+                               pose.translation() + leg * Pose().Direction(), radius_m_)) {
           BackUpToSee();
           ++result_.blocked_looks;
           return FollowOutcome::kBlocked;
         }
         if (verdict == LookVerdict::kBlocked) {
-          mapper_.ConfirmBlocking(profile, last_seen_pose_, leg);
+          mapper_.ConfirmBlocking(profile, last_seen_.pose, leg);
           if (observer_.on_blocked) observer_.on_blocked(leg);
           ++result_.blocked_looks;
           return FollowOutcome::kBlocked;
@@ -245,7 +255,7 @@ class Explorer {
   // one drive a straight leg (as far as one look reaches).
   std::vector<Eigen::Vector2d> MergeCollinear(const std::vector<Eigen::Vector2d>& waypoints) const {
     std::vector<Eigen::Vector2d> merged;
-    Eigen::Vector2d from = robot_.Odometry().translation();
+    Eigen::Vector2d from = Pose().translation();
     for (std::size_t i = 0; i < waypoints.size(); ++i) {
       if (i + 1 < waypoints.size()) {
         const Eigen::Vector2d a = (waypoints[i] - from).normalized();
@@ -264,7 +274,7 @@ class Explorer {
   void BackUpToSee() {
     const double back = look_.options().near_m;
     const mapping::TrinaryMap map = mapper_.grid().ToTrinary();
-    const core::Pose2 pose = robot_.Odometry();
+    const core::Pose2 pose = Pose();
     if (!CorridorKnownFree(map, pose.translation(), pose.translation() - back * pose.Direction(),
                            radius_m_)) {
       return;
@@ -298,7 +308,7 @@ class Explorer {
   // Unknown cells nearer than this to where the robot just looked all round
   // cannot be seen from there.
   bool AtLastPirouette() const {
-    return last_pirouette_ && (robot_.Odometry().translation() - *last_pirouette_).norm() < cell_m_;
+    return last_pirouette_ && (Pose().translation() - *last_pirouette_).norm() < cell_m_;
   }
 
   double NearBlindRadius() const { return ViewDistance() + cell_m_; }
@@ -352,7 +362,7 @@ class Explorer {
       return false;
     }
     ++step_aways_;
-    const Eigen::Vector2d here = robot_.Odometry().translation();
+    const Eigen::Vector2d here = Pose().translation();
     const Eigen::Vector2d centroid = sum / static_cast<double>(nearby.size());
     const double away = std::atan2(here.y() - centroid.y(), here.x() - centroid.x());
     const double distance = look_.options().near_m + 3.0 * cell_m_;
@@ -383,7 +393,7 @@ class Explorer {
   // of the goal.
   void StopWhereTheGoalIsInView(explore::Plan& plan) const {
     const double view = ViewDistance();
-    Eigen::Vector2d from = robot_.Odometry().translation();
+    Eigen::Vector2d from = Pose().translation();
     std::vector<Eigen::Vector2d> kept;
     for (const Eigen::Vector2d& to : plan.waypoints_world) {
       if ((from - plan.goal_world).norm() <= view) break;
@@ -414,8 +424,7 @@ class Explorer {
       planner_options.robot_radius_m = radius_m_;
       explore::CoarseGrid grid = explore::PlanningGrid(mapper_.grid().ToTrinary(), planner_options);
       const std::optional<core::CellIndex> home = grid.geometry().CellAt(start_pose_.translation());
-      const std::optional<core::CellIndex> here =
-          grid.geometry().CellAt(robot_.Odometry().translation());
+      const std::optional<core::CellIndex> here = grid.geometry().CellAt(Pose().translation());
       if (!home || !here) return;
       for (int y = 0; y < grid.height(); ++y) {
         for (int x = 0; x < grid.width(); ++x) {
@@ -429,11 +438,11 @@ class Explorer {
       const std::optional<explore::Path> path = explore::SteepestDescent(grid, field, *here);
       if (!path) return;
       explore::Plan plan =
-          explore::PlanAlong(grid, *path, robot_.Odometry().translation(), /*enter_goal=*/true);
+          explore::PlanAlong(grid, *path, Pose().translation(), /*enter_goal=*/true);
       plan.waypoints_world.push_back(start_pose_.translation());
       if (Follow(plan) == FollowOutcome::kReached) {
-        Turn(core::NormalizeAngle(start_pose_.heading() - robot_.Odometry().heading()));
-        result_.path.push_back(robot_.Odometry());
+        Turn(core::NormalizeAngle(start_pose_.heading() - Pose().heading()));
+        result_.path.push_back(Pose());
         return;
       }
       if (!result_.status.empty()) return;
@@ -463,7 +472,6 @@ class Explorer {
   FrameMapper mapper_;
   const LookAhead& look_;
   FrameMapper::Seen last_seen_;
-  core::Pose2 last_seen_pose_;
   std::vector<robot::MoveOutcome> motions_since_frame_;
   std::unique_ptr<explore::Planner> planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
@@ -475,6 +483,32 @@ class Explorer {
 
 }  // namespace
 
+namespace {
+
+// The error of the believed poses against the true ones, frame by frame
+// (their counts may differ by a frame taken as the run was stopped).
+std::optional<PoseError> PoseErrorOf(const std::vector<core::Pose2>& believed,
+                                     const std::vector<core::Pose2>& truth) {
+  const std::size_t n = std::min(believed.size(), truth.size());
+  if (n == 0) return std::nullopt;
+  PoseError error;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double m = (believed[i].translation() - truth[i].translation()).norm();
+    const double deg = std::abs(core::NormalizeAngle(believed[i].heading() - truth[i].heading())) *
+                       180.0 / std::numbers::pi;
+    error.mean_m += m;
+    error.mean_deg += deg;
+    error.max_m = std::max(error.max_m, m);
+    error.final_m = m;
+    error.final_deg = deg;
+  }
+  error.mean_m /= static_cast<double>(n);
+  error.mean_deg /= static_cast<double>(n);
+  return error;
+}
+
+}  // namespace
+
 std::string_view PlannerKindName(PlannerKind kind) {
   return kind == PlannerKind::kFrontier ? "frontier" : "dt";
 }
@@ -482,6 +516,16 @@ std::string_view PlannerKindName(PlannerKind kind) {
 std::optional<PlannerKind> ParsePlannerKind(std::string_view name) {
   if (name == "dt") return PlannerKind::kDistanceTransform;
   if (name == "frontier") return PlannerKind::kFrontier;
+  return std::nullopt;
+}
+
+std::string_view LocalizeKindName(LocalizeKind kind) {
+  return kind == LocalizeKind::kScan ? "scan" : "none";
+}
+
+std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name) {
+  if (name == "none") return LocalizeKind::kNone;
+  if (name == "scan") return LocalizeKind::kScan;
   return std::nullopt;
 }
 
@@ -527,10 +571,26 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
   SimulatedRobot simulated(world, options.seed, options.odometry_noise);
   sim::SimRobot& robot = simulated.robot();
   FloorMasker masker(options.method, world, camera);
+  // The truth at every frame, for the pose error.
+  std::vector<core::Pose2> truth;
+  ExplorationObserver watching = observer;
+  watching.on_capture = [&](const robot::Frame& frame,
+                            const std::vector<robot::MoveOutcome>& motions) {
+    truth.push_back(robot.TruePose());
+    if (observer.on_capture) observer.on_capture(frame, motions);
+  };
   ExplorationResult result = ExploreWithRobot(
       robot, RobotDescription{camera, world.robot().radius}, options,
-      [&](const cv::Mat3b& bgr) { return masker.Mask(bgr, robot.TruePose()); }, observer);
+      [&](const cv::Mat3b& bgr) { return masker.Mask(bgr, robot.TruePose()); }, watching);
   result.final_true_pose = robot.TruePose();
+  result.pose_error = PoseErrorOf(result.frame_poses, truth);
+  if (result.pose_error && !result.path.empty()) {
+    const core::Pose2& final_pose = result.path.back();
+    result.pose_error->final_m = (final_pose.translation() - robot.TruePose().translation()).norm();
+    result.pose_error->final_deg =
+        std::abs(core::NormalizeAngle(final_pose.heading() - robot.TruePose().heading())) * 180.0 /
+        std::numbers::pi;
+  }
   result.times.render_s = simulated.render_s();
   return result;
 }

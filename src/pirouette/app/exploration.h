@@ -12,6 +12,7 @@
 #include "pirouette/app/frame_mapper.h"
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/mapping/trinary_map.h"
 #include "pirouette/robot/robot.h"
@@ -20,6 +21,14 @@
 namespace pirouette::app {
 
 enum class PlannerKind { kDistanceTransform, kFrontier };
+
+// How the explorer keeps its pose: kNone trusts the odometry; kScan matches
+// every frame against the map so far (localize::PoseTracker).
+enum class LocalizeKind { kNone, kScan };
+
+// "none" | "scan", the command line's and run.json's names.
+std::string_view LocalizeKindName(LocalizeKind kind);
+std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name);
 
 // "dt" | "frontier", the command line's and run.json's names.
 std::string_view PlannerKindName(PlannerKind kind);
@@ -49,6 +58,9 @@ struct ExplorationOptions {
   mapping::OccupancyOptions occupancy{.hit_probability = 0.8, .miss_probability = 0.18};
   // Drive back to the start at the end.
   bool return_home = false;
+  // Pose tracking, and what it assumes of the odometry.
+  LocalizeKind localize = LocalizeKind::kNone;
+  localize::TrackerOptions tracker;
   // The simulator's motion error; none: the world file's odometry_noise.
   std::optional<sim::OdometryNoise> odometry_noise;
   // Checked between steps; when it becomes true the run ends with status
@@ -65,6 +77,17 @@ struct StageTimes {
   double perceive_s = 0.0;  // segmentation and obstacle profile
   double update_s = 0.0;    // the occupancy grid
   double plan_s = 0.0;      // configuration space, distance transform, path
+  double localize_s = 0.0;  // matching frames against the map
+};
+
+// How far the robot's belief was from the simulator's truth, over the frames
+// of a run (translation in metres, heading in degrees, absolute).
+struct PoseError {
+  double final_m = 0.0;
+  double final_deg = 0.0;
+  double mean_m = 0.0;
+  double mean_deg = 0.0;
+  double max_m = 0.0;
 };
 
 // What a camera frame taken during the run showed, for the video.
@@ -95,6 +118,11 @@ struct ExplorationResult {
   double wall_time_s = 0.0;
   // The simulator's truth at the end; none for a real robot.
   std::optional<core::Pose2> final_true_pose;
+  // Against the truth, over the frames; none for a real robot.
+  std::optional<PoseError> pose_error;
+  std::vector<core::Pose2> frame_poses;  // where each frame went in the map
+  int matches = 0;                       // frames the tracker matched
+  int corrections = 0;                   // of them, those it corrected
   StageTimes times;
 };
 

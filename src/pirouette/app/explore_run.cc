@@ -52,13 +52,30 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   run["stage_time_s"] = {{"render", Round(result.times.render_s, 1e-4)},
                          {"perceive", Round(result.times.perceive_s, 1e-4)},
                          {"update", Round(result.times.update_s, 1e-4)},
-                         {"plan", Round(result.times.plan_s, 1e-4)}};
+                         {"plan", Round(result.times.plan_s, 1e-4)},
+                         {"localize", Round(result.times.localize_s, 1e-4)}};
+  run["localize"] = LocalizeKindName(request.options.localize);
+  if (request.options.localize == LocalizeKind::kScan) {
+    run["localization"] = {
+        {"frames_matched", result.matches},
+        {"frames_corrected", result.corrections},
+        {"time_per_correction_s",
+         result.matches > 0 ? Round(result.times.localize_s / result.matches, 1e-6) : 0.0}};
+  }
   const auto pose_json = [](const core::Pose2& p) {
     return nlohmann::json::array(
         {Round(p.x(), 1e-4), Round(p.y(), 1e-4), Round(core::RadToDeg(p.heading()), 0.01)});
   };
   if (!result.path.empty()) run["final_pose"] = pose_json(result.path.back());
   if (result.final_true_pose) run["final_true_pose"] = pose_json(*result.final_true_pose);
+  if (result.pose_error) {
+    const PoseError& e = *result.pose_error;
+    run["pose_error"] = {{"final_m", Round(e.final_m, 1e-4)},
+                         {"final_deg", Round(e.final_deg, 0.01)},
+                         {"mean_m", Round(e.mean_m, 1e-4)},
+                         {"mean_deg", Round(e.mean_deg, 0.01)},
+                         {"max_m", Round(e.max_m, 1e-4)}};
+  }
   run["blocked_looks"] = result.blocked_looks;
   run["backups"] = result.backups;
   if (!request.robot_url.empty()) run["robot"] = request.robot_url;
@@ -175,6 +192,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
                            ? request.options.max_range_m
                            : camera::MaxRange(robot_info.camera, info.cell_m);
     info.method = MaskSourceName(request.options.method);
+    info.localize = LocalizeKindName(request.options.localize);
     if (request.robot_url.empty()) {
       info.world = request.world_path;
       info.seed = request.options.seed;

@@ -28,7 +28,9 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
       ipm_(setup.camera),
       extractor_(ipm_, setup.max_range_m),
       look_(LookAheadOptions{setup.radius_m, NearRange(ipm_), setup.max_range_m, setup.cell_m}),
-      grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {}
+      grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {
+  if (setup.tracking) tracker_.emplace(*setup.tracking);
+}
 
 FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
   Seen seen;
@@ -38,10 +40,36 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
     seen.mask = mask_(seen.bgr);
     seen.profile = extractor_.Extract(seen.mask);
   }
-  StageTimer timer(update_s_);
-  mapping::InsertProfile(grid_, seen.profile, frame.odometry);
-  mapping::MarkFootprintFree(grid_, frame.odometry.translation(), setup_.radius_m);
+  if (!tracker_) {
+    seen.pose = frame.odometry;
+    Insert(seen.profile, seen.pose);
+    return seen;
+  }
+  {
+    StageTimer timer(localize_s_);
+    if (tracker_->StartsStop(frame.odometry)) {
+      before_stop_ = grid_;
+      stop_events_.clear();
+    }
+    stop_poses_ = tracker_->Track(*before_stop_, seen.profile, frame.odometry);
+  }
+  stop_events_.push_back({seen.profile, std::nullopt});
+  seen.pose = stop_poses_.back();
+  // The stop's frames again, where the tracker now puts them.
+  grid_ = *before_stop_;
+  for (std::size_t i = 0; i < stop_events_.size(); ++i) {
+    Insert(stop_events_[i].profile, stop_poses_[i]);
+    if (stop_events_[i].blocked_leg_m) {
+      Confirm(stop_events_[i].profile, stop_poses_[i], *stop_events_[i].blocked_leg_m);
+    }
+  }
   return seen;
+}
+
+void FrameMapper::Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot) {
+  StageTimer timer(update_s_);
+  mapping::InsertProfile(grid_, profile, map_T_robot);
+  mapping::MarkFootprintFree(grid_, map_T_robot.translation(), setup_.radius_m);
 }
 
 void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
@@ -49,17 +77,24 @@ void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
   core::ObstacleProfile bump;
   bump.max_range_m = setup_.radius_m + setup_.cell_m;
   bump.readings.push_back({0.0, setup_.radius_m + 0.5 * setup_.cell_m, core::ReadingKind::kHit});
-  mapping::InsertProfile(grid_, bump, odom_T_robot);
+  mapping::InsertProfile(grid_, bump, ToMap(odom_T_robot));
 }
 
 void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
-                                  const core::Pose2& odom_T_robot, double leg_m) {
+                                  const core::Pose2& map_T_robot, double leg_m) {
+  // With tracking, the stop's last frame's confirmation is put in again with it.
+  if (tracker_ && !stop_events_.empty()) stop_events_.back().blocked_leg_m = leg_m;
+  Confirm(profile, map_T_robot, leg_m);
+}
+
+void FrameMapper::Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
+                          double leg_m) {
   const LookAhead::Finding finding = look_.Blocking(profile, leg_m);
   StageTimer timer(update_s_);
   for (int round = 0; round < 4; ++round) {
     grid_.BeginFrame();
     for (const Eigen::Vector2d& hit : finding.hits_robot) {
-      const core::CellIndex c = grid_.geometry().CellOf(odom_T_robot * hit);
+      const core::CellIndex c = grid_.geometry().CellOf(map_T_robot * hit);
       if (grid_.LogOdds(c) <= 0.0F) grid_.Apply(c, mapping::CellUpdate::kHit);
     }
   }

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <vector>
 
 #include "pirouette/app/look_ahead.h"
@@ -10,6 +11,7 @@
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/core/obstacle_profile.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/robot/robot.h"
 #include "pirouette/vision/profile_extractor.h"
@@ -23,6 +25,9 @@ struct MapperSetup {
   double cell_m = 0.0;       // the map's cell (> 0)
   double max_range_m = 0.0;  // readings are trusted out to this range (> 0)
   mapping::OccupancyOptions occupancy;
+  // Pose tracking (scan-to-map matching at every frame); none: the map is
+  // made at the odometry's poses.
+  std::optional<localize::TrackerOptions> tracking;
 };
 
 // The floor mask (255 floor) of a raw BGR frame, from a segmenter that sees
@@ -35,7 +40,10 @@ using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
 // through the paper's range sensor model (mapping::InsertProfile), with the
 // robot's footprint free; a straight move that ended at contact adds a hit
 // in front of the robot (its bumper); a look that found the way blocked
-// confirms the blocking hits (ConfirmBlocking).
+// confirms the blocking hits (ConfirmBlocking). With tracking, each frame is
+// first matched against the map so far (localize::PoseTracker) and goes in
+// at the corrected pose: the map's frame is the odometry's at the start, and
+// ToMap turns any later odometry pose into it.
 class FrameMapper {
  public:
   // The grid starts as 2 m square around `start` (odometry frame) and grows.
@@ -45,18 +53,27 @@ class FrameMapper {
     cv::Mat3b bgr;   // the raw frame, BGR
     cv::Mat1b mask;  // its floor, 255
     core::ObstacleProfile profile;
+    core::Pose2 pose;  // where it went in the map (the odometry's, corrected)
   };
-  // Perceives a frame and puts what it shows in the map at its odometry.
+  // Perceives a frame and puts what it shows in the map at its odometry,
+  // corrected by the tracker.
   Seen AddFrame(const robot::Frame& frame);
+
+  // The map pose of an odometry pose (the same without tracking).
+  core::Pose2 ToMap(const core::Pose2& odom_T_robot) const {
+    return tracker_ ? tracker_->ToMap(odom_T_robot) : odom_T_robot;
+  }
+  // The tracker; none without tracking.
+  const std::optional<localize::PoseTracker>& tracker() const { return tracker_; }
 
   // A straight move stopped at contact with the robot at odom_T_robot.
   void AddContact(const core::Pose2& odom_T_robot);
 
-  // The look from odom_T_robot (profile) found a forward move of leg_m
+  // The look from map_T_robot (profile) found a forward move of leg_m
   // blocked: its hits in the corridor are made occupied in the map, so that
   // the next plan goes another way (a cell seen free once takes several
   // hits to read occupied).
-  void ConfirmBlocking(const core::ObstacleProfile& profile, const core::Pose2& odom_T_robot,
+  void ConfirmBlocking(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
                        double leg_m);
 
   const mapping::OccupancyGrid& grid() const { return grid_; }
@@ -68,6 +85,8 @@ class FrameMapper {
   // Seconds spent segmenting and reading profiles, and updating the grid.
   double perceive_s() const { return perceive_s_; }
   double update_s() const { return update_s_; }
+  // Seconds spent matching frames against the map (tracking).
+  double localize_s() const { return localize_s_; }
 
  private:
   MapperSetup setup_;
@@ -75,7 +94,22 @@ class FrameMapper {
   camera::InversePerspectiveMap ipm_;
   vision::ProfileExtractor extractor_;  // the profile tables, built once
   LookAhead look_;
+  // Puts a frame (or a confirmation) in grid_ at its map pose.
+  void Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot);
+  void Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot, double leg_m);
+
   mapping::OccupancyGrid grid_;
+  std::optional<localize::PoseTracker> tracker_;
+  // With tracking: the map before the current stop, and what went into the
+  // map since, to put in again when the tracker moves the stop's frames.
+  struct StopEvent {
+    core::ObstacleProfile profile;
+    std::optional<double> blocked_leg_m;  // a ConfirmBlocking of the frame before
+  };
+  std::optional<mapping::OccupancyGrid> before_stop_;
+  std::vector<StopEvent> stop_events_;
+  std::vector<core::Pose2> stop_poses_;
+  double localize_s_ = 0.0;
   double perceive_s_ = 0.0;
   double update_s_ = 0.0;
 };

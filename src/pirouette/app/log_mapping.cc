@@ -50,7 +50,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   const RunLog log = ReadRunLog(request.log_dir);
   const std::string log_yaml = (fs::path(request.log_dir) / "log.yaml").string();
 
-  MapperSetup setup{log.camera, 0.0, 0.0, 0.0, ExplorationOptions{}.occupancy};
+  MapperSetup setup{log.camera, 0.0, 0.0, 0.0, ExplorationOptions{}.occupancy, std::nullopt};
   setup.radius_m = request.radius_m > 0.0 ? request.radius_m : log.info.radius_m;
   if (!(setup.radius_m > 0.0)) {
     throw core::InputError(log_yaml, 0, "robot.radius",
@@ -77,6 +77,17 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   const std::string method_name = request.method.empty() ? log.info.method : request.method;
   const vision::SegmentationMethod method =
       MethodOf(method_name, request.method.empty() ? log_yaml : "--method");
+
+  const std::string localize_name = !request.localize.empty()    ? request.localize
+                                    : !log.info.localize.empty() ? log.info.localize
+                                                                 : "none";
+  const std::optional<LocalizeKind> localize = ParseLocalizeKind(localize_name);
+  if (!localize) {
+    throw core::InputError(request.localize.empty() ? log_yaml : "--localize", 0,
+                           request.localize.empty() ? "map.localize" : "",
+                           "'" + localize_name + "' is not a way to localize (scan | none)");
+  }
+  if (*localize == LocalizeKind::kScan) setup.tracking = ExplorationOptions{}.tracker;
 
   // The world for the evaluation: the one asked for, else the log's when it
   // is still where it was.
@@ -109,15 +120,15 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
     const robot::Frame frame = ReadLogFrame(log, row);
     if (row.contact) mapper.AddContact(row.odometry);
     const FrameMapper::Seen seen = mapper.AddFrame(frame);
-    if (row.blocked_leg_m) mapper.ConfirmBlocking(seen.profile, row.odometry, *row.blocked_leg_m);
+    if (row.blocked_leg_m) mapper.ConfirmBlocking(seen.profile, seen.pose, *row.blocked_leg_m);
     ++result.frames;
+    result.frame_poses.push_back(seen.pose);
     if (result.path.empty() ||
-        (result.path.back().translation() - row.odometry.translation()).norm() > 1e-9) {
+        (result.path.back().translation() - seen.pose.translation()).norm() > 1e-9) {
       if (!result.path.empty()) {
-        result.path_length_m +=
-            (result.path.back().translation() - row.odometry.translation()).norm();
+        result.path_length_m += (result.path.back().translation() - seen.pose.translation()).norm();
       }
-      result.path.push_back(row.odometry);
+      result.path.push_back(seen.pose);
     }
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
     progress.Show(elapsed, [&] {

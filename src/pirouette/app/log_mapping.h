@@ -16,7 +16,8 @@ struct MapLogRequest {
   double radius_m = 0.0;
   double cell_m = 0.0;
   double max_range_m = 0.0;
-  std::string method;  // "default" | "paper"
+  std::string method;    // "default" | "paper"
+  std::string localize;  // "scan" | "none"
   bool quiet = false;
 };
 

@@ -74,6 +74,7 @@ RunLogInfo ReadInfo(const std::string& path) {
     if (map["cell"]) info.cell_m = number(map["cell"], "map.cell");
     if (map["max_range"]) info.max_range_m = number(map["max_range"], "map.max_range");
     if (map["method"]) info.method = map["method"].as<std::string>("");
+    if (map["localize"]) info.localize = map["localize"].as<std::string>("");
   }
   if (const YAML::Node source = root["source"]) {
     if (source["world"]) info.world = source["world"].as<std::string>("");
@@ -97,7 +98,9 @@ std::string InfoText(const RunLogInfo& info) {
   out << YAML::Key << "map" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "cell" << YAML::Value << info.cell_m;
   out << YAML::Key << "max_range" << YAML::Value << info.max_range_m;
-  out << YAML::Key << "method" << YAML::Value << info.method << YAML::EndMap;
+  out << YAML::Key << "method" << YAML::Value << info.method;
+  if (!info.localize.empty()) out << YAML::Key << "localize" << YAML::Value << info.localize;
+  out << YAML::EndMap;
   if (!info.world.empty()) {
     out << YAML::Key << "source" << YAML::Value << YAML::BeginMap << YAML::Key << "world"
         << YAML::Value << info.world << YAML::Key << "seed" << YAML::Value << info.seed

@@ -30,6 +30,7 @@ struct RunLogInfo {
   double cell_m = 0.0;       // the map's cell the run used (0: not said)
   double max_range_m = 0.0;  // the readings' trusted range (0: not said)
   std::string method;        // segmentation: "default", "paper" (empty: not said)
+  std::string localize;      // pose tracking: "scan", "none" (empty: not said, none)
   std::string world;         // the simulated world's file, as given (empty: a real robot)
   std::uint64_t seed = 0;    // the simulator's seed
 };

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The README's localization table: every shipped world, seeds 1..N, with
+# odometry noise of 5% translation and 5% rotation, explored with
+# --localize none and --localize scan, and with scan and no noise (what the
+# tracker costs where there is nothing to correct). Prints a Markdown table.
+#   usage: bench/localization_table.sh [BINARY] [SEEDS]   (default: build/release, 5 seeds)
+set -euo pipefail
+bin=${1:-build/release/apps/pirouette/pirouette}
+seeds=${2:-5}
+out=$(mktemp -d)
+for world in worlds/*.yaml; do
+  grep -q "^format: pirouette-world" "$world" || continue
+  name=$(basename "$world" .yaml)
+  for seed in $(seq 1 "$seeds"); do
+    for mode in none:0.05 scan:0.05 scan:0; do
+      loc=${mode%%:*}
+      noise=${mode##*:}
+      "$bin" explore --world "$world" --seed "$seed" --odometry-noise "$noise,$noise" \
+        --localize "$loc" --out "$out/$name-$seed-$loc@$noise" --quiet >/dev/null 2>&1 || true
+      echo "localization_table: $name seed $seed $loc noise $noise done" >&2
+    done
+  done
+done
+python3 - "$out" <<'PY'
+import json, os, sys, collections
+out = sys.argv[1]
+rows = collections.defaultdict(list)
+for d in sorted(os.listdir(out)):
+    r = json.load(open(os.path.join(out, d, "run.json")))
+    name, seed, loc = d.rsplit("-", 2)
+    rows[(name, loc)].append(r)
+print("| world | localize @ odometry noise | complete | coverage (mean, worst) | false_free (mean, worst) | wall_error_m (mean, worst) | pose error m (mean) | heading error ° (mean) | s per matched frame |")
+print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+for (name, loc), rs in sorted(rows.items()):
+    e = [r["eval"] for r in rs]
+    mean = lambda xs: sum(xs) / len(xs)
+    cov = [x["coverage"] for x in e]; ff = [x["false_free"] for x in e]; we = [x["wall_error_m"] for x in e]
+    pe = [r["pose_error"]["mean_m"] for r in rs]; pd = [r["pose_error"]["mean_deg"] for r in rs]
+    t = [r["localization"]["time_per_correction_s"] for r in rs if "localization" in r]
+    print(f"| {name} | {loc} | {sum(r['status'] == 'complete' for r in rs)}/{len(rs)} | "
+          f"{mean(cov):.3f}, {min(cov):.3f} | {mean(ff):.4f}, {max(ff):.4f} | {mean(we):.4f}, {max(we):.4f} | "
+          f"{mean(pe):.3f} | {mean(pd):.1f} | {mean(t) * 1000:.1f} ms |" if t else
+          f"| {name} | {loc} | {sum(r['status'] == 'complete' for r in rs)}/{len(rs)} | "
+          f"{mean(cov):.3f}, {min(cov):.3f} | {mean(ff):.4f}, {max(ff):.4f} | {mean(we):.4f}, {max(we):.4f} | "
+          f"{mean(pe):.3f} | {mean(pd):.1f} | — |")
+PY

@@ -1,0 +1,168 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pirouette/app/floor_masker.h"
+#include "pirouette/core/obstacle_profile.h"
+#include "pirouette/core/pose2.h"
+#include "pirouette/localize/place_table.h"
+#include "pirouette/mapping/trinary_map.h"
+
+// Global localization (the kidnapped robot) from one pirouette on a saved map:
+// Taylor, Geva & Boles 2005, §5.3, sketch it from the Radial Obstacle Profile
+// (a table of places looked up by the ROP); here the table is made from the
+// map itself, and every candidate is verified against the map.
+
+namespace pirouette::app {
+
+// What the map says one bearing from a point would show the camera: the first
+// occupied cell within max_range_m (kHit, its range), free cells all the way
+// (kClear, range max_range_m), or a cell that is neither first (kUnknown, the
+// range to it: the map cannot say what lies there).
+enum class MapRayKind : std::uint8_t { kHit, kClear, kUnknown };
+
+struct MapView {
+  std::vector<double> ranges_m;   // kRadialProfileBins, bin b: bearings [b, b + 1)° from +x
+  std::vector<MapRayKind> kinds;  // per bin
+};
+
+// The map's ROP from `origin_m` (world frame), bin b cast along the bin's
+// centre bearing (b + 0.5)° counter-clockwise from the map's +x, in steps of
+// a quarter cell. Off the map counts as unknown.
+MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origin_m,
+                    double max_range_m);
+
+// Whether a disc of `radius_m` at `p_m` covers only free cells of the map.
+bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, double radius_m);
+
+// A name for the map (its geometry and cells, an FNV-1a hash) and the table's
+// parameters: what a saved place table's `world` field holds, so that a table
+// is reused only for the map and settings it was made for.
+std::string MapTableName(const mapping::TrinaryMap& map, double spacing_m, double max_range_m);
+
+// The place table of a map (Taylor, Geva & Boles 2005, §5.3's "table of
+// signatures and positions", made from the map instead of from pirouettes):
+// at the centres of a square grid of `spacing_m` over the map wherever a
+// disc of `robot_radius_m` covers only free cells, the map's ROP
+// (CastMapView) in a frame of heading 0; unknown rays are stored as hits at
+// their range (kinds 'b', blind). No colours: the map has none.
+localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double robot_radius_m,
+                                        double spacing_m, double max_range_m);
+
+// How well a pirouette's ROP (robot frame) fits the map from a pose.
+struct MapAgreement {
+  double score = 0.0;  // mean agreement of the compared bins, [0, 1]
+  int compared = 0;    // bins compared (the query's and the map's both known)
+};
+
+// The query's bin b looks along world bearing heading + b°; it is compared
+// with the map's ray there: hit against hit by exp(−d²/2σ²),
+// σ = max(kAgreementSigmaFloorM, kAgreementSigmaFraction × range, one map
+// cell); clear against clear agrees (1); hit against clear or clear against
+// a hit nearer than the max range less 2σ disagrees (0); a blind bin (an
+// obstacle somewhere nearer than its range) agrees with a map hit not
+// farther than its range + 2σ, and disagrees with a clear ray. Rays the
+// map calls unknown are left out. The score is a weighted mean: a bin
+// clear in both weighs kClearWeight (an open floor is clear almost
+// everywhere, which tells places apart poorly), every other bin 1.
+inline constexpr double kAgreementSigmaFloorM = 0.02;
+inline constexpr double kAgreementSigmaFraction = 0.05;
+inline constexpr double kClearWeight = 0.25;
+MapAgreement Agreement(const localize::PlaceView& query,
+                       const std::vector<core::ReadingKind>& kinds, const MapView& map_view,
+                       double heading_rad, double max_range_m, double cell_m);
+
+// The thresholds of an answer.
+struct LocateOptions {
+  int candidates = 30;                  // table places refined (best coarse scores, spread apart)
+  double min_agreement = 0.85;          // the best's score must reach this
+  double min_margin = 0.08;             // above the best candidate more than one coarse cell away
+  int min_compared = 240;               // bins (of 360) the best must have compared
+  int min_seen = 36;                    // bins of the query that hit something (not clear)
+  double heading_tolerance_deg = 10.0;  // for judging against the truth
+};
+
+struct LocateCandidate {
+  core::Pose2 world_T_robot;
+  double score = 0.0;
+  int compared = 0;
+};
+
+// One localization.
+struct LocateAnswer {
+  bool found = false;
+  std::string reason;         // why not, when !found
+  core::Pose2 world_T_robot;  // the best candidate (the answer when found)
+  double agreement = 0.0;     // its score
+  int compared = 0;
+  double runner_up = 0.0;                   // the best score more than one coarse cell away
+  int seen_bins = 0;                        // query bins that hit something
+  std::vector<LocateCandidate> candidates;  // refined, best first
+};
+
+// Finds a pirouette's pose on a map: scores every table place at every
+// one-degree heading against the query (Agreement with the place's stored
+// view), refines the best options.candidates (spread at least a table
+// spacing apart) by a local search of position (down to a map cell) and
+// heading (down to a quarter degree) against CastMapView, and answers the
+// best when its score, compared bins and margin over every candidate more
+// than `coarse_cell_m` away pass `options`; else not found, with the reason.
+LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::PlaceTable& table,
+                    const localize::PlaceView& query, const std::vector<core::ReadingKind>& kinds,
+                    double spacing_m, double coarse_cell_m, const LocateOptions& options = {});
+
+struct LocateRequest {
+  std::string map_path;             // map.yaml
+  std::string world_path;           // the simulator's world
+  std::optional<core::Pose2> pose;  // the truth; or `random` poses
+  int random = 0;                   // > 0: this many random poses where the robot fits
+  std::string table_path;           // empty: places.yaml beside the map
+  std::uint64_t seed = 1;
+  MaskSource method = MaskSource::kDefault;
+  bool quiet = false;
+  LocateOptions options;
+};
+
+// One query's outcome against the truth.
+struct LocateTrial {
+  core::Pose2 truth;
+  LocateAnswer answer;
+  double position_error_m = 0.0;  // of the answer's best candidate
+  double heading_error_deg = 0.0;
+  bool right = false;  // found, within one coarse cell and the heading tolerance
+};
+
+struct LocateResult {
+  std::string table_path;
+  bool table_loaded = false;
+  int table_places = 0;
+  double spacing_m = 0.0;
+  double coarse_cell_m = 0.0;
+  double max_range_m = 0.0;
+  std::vector<LocateTrial> trials;
+  int found_right = 0;
+  int cannot_tell = 0;
+  int wrong = 0;
+  double table_s = 0.0;
+  double mean_locate_s = 0.0;  // per query, the pirouette's simulation excluded
+};
+
+// `pirouette locate`: reads the map (app::ReadRosMap) and the world, loads the
+// map's place table from request.table_path when the file exists and was made
+// for this map and settings (else builds it with BuildMapPlaceTable at
+// DefaultTableSpacing and writes it there), then for the pose (or for
+// request.random random poses, seeded) makes one simulated pirouette
+// (PlaceObserver; the robot knows nothing of the pose) and Locates it.
+// Throws core::InputError for a bad map, world, pose (the robot does not fit:
+// "--pose") or count (exit 2).
+LocateResult RunLocate(const LocateRequest& request);
+
+// The JSON report (format pirouette-locate-report/1).
+nlohmann::json LocateJson(const LocateRequest& request, const LocateResult& result);
+
+}  // namespace pirouette::app

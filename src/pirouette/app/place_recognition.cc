@@ -1,0 +1,374 @@
+#include "pirouette/app/place_recognition.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+#include <random>
+
+#include "pirouette/app/exploration.h"
+#include "pirouette/app/image_io.h"
+#include "pirouette/app/progress_line.h"
+#include "pirouette/app/simulated_pirouette.h"
+#include "pirouette/camera/inverse_perspective_map.h"
+#include "pirouette/camera/range_resolution.h"
+#include "pirouette/core/angle.h"
+#include "pirouette/core/input_error.h"
+#include "pirouette/explore/planner.h"
+#include "pirouette/mapping/radial_profile.h"
+#include "pirouette/sim/renderer.h"
+#include "pirouette/sim/world_file.h"
+#include "pirouette/vision/profile_extractor.h"
+
+namespace pirouette::app {
+namespace {
+
+constexpr int kBins = mapping::kRadialProfileBins;
+
+int BinOf(double bearing_rad) {
+  double a = std::fmod(bearing_rad, 2.0 * std::numbers::pi);
+  if (a < 0.0) a += 2.0 * std::numbers::pi;
+  return std::clamp(static_cast<int>(std::floor(core::RadToDeg(a) * kBins / 360.0)), 0, kBins - 1);
+}
+
+// The colour class of column u's obstacle base: the mean of the
+// kColourSampleRows pixels just above the floor's edge (the first non-floor
+// pixel up from the floor at the bottom); where the bottom rows hold no floor
+// (a blind reading: something fills the view), the mean of the bottom rows.
+// kNone where the floor reaches the top row.
+localize::ColourClass ColumnColour(const cv::Mat3b& bgr, const cv::Mat1b& mask, int u) {
+  const int bottom = mask.rows - 1;
+  int v = -1;
+  for (int k = 0; k < vision::kBlindSearchRows && bottom - k >= 0; ++k) {
+    if (mask(bottom - k, u) != 0) {
+      v = bottom - k;
+      break;
+    }
+  }
+  if (v < 0) {
+    v = bottom;  // blind: what fills the view is at the bottom
+  } else {
+    while (v >= 0 && mask(v, u) != 0) --v;
+    if (v < 0) return localize::ColourClass::kNone;
+  }
+  std::array<double, 3> sum{};
+  int n = 0;
+  for (int row = v; row > v - kColourSampleRows && row >= 0; --row) {
+    const cv::Vec3b& p = bgr(row, u);
+    for (int c = 0; c < 3; ++c) sum[c] += p[c];
+    ++n;
+  }
+  const auto mean = [&](int c) { return static_cast<std::uint8_t>(std::lround(sum[c] / n)); };
+  return localize::ClassifyColour(core::Rgb{mean(2), mean(1), mean(0)});
+}
+
+double Seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+struct PlaceObserver::Impl {
+  Impl(const sim::World& world, MaskSource method, double max_range_m, std::uint64_t render_seed)
+      : world(world),
+        renderer(world, world.robot().camera,
+                 [render_seed] {
+                   sim::RenderOptions options;
+                   options.seed = render_seed;
+                   return options;
+                 }()),
+        ipm(world.robot().camera),
+        extractor(ipm, max_range_m),
+        masker(method, world, world.robot().camera) {}
+
+  const sim::World& world;
+  sim::Renderer renderer;
+  camera::InversePerspectiveMap ipm;
+  vision::ProfileExtractor extractor;
+  FloorMasker masker;
+};
+
+PlaceObserver::PlaceObserver(const sim::World& world, MaskSource method, double max_range_m,
+                             std::uint64_t render_seed)
+    : impl_(std::make_unique<Impl>(world, method, max_range_m, render_seed)) {
+  // The floor segmenter learns the floor over its first pirouette: let it
+  // learn where the world puts the robot, not at a table's first place (a
+  // corner, where walls fill the views).
+  Observe(world.robot().start, render_seed);
+}
+
+PlaceObserver::~PlaceObserver() = default;
+
+double PlaceObserver::max_range_m() const { return impl_->extractor.max_range_m(); }
+
+ObservedPlace PlaceObserver::Observe(const core::Pose2& world_T_robot, std::uint64_t seed) {
+  const sim::World placed = PlaceRobot(impl_->world, world_T_robot, "place");
+  const std::vector<SimulatedFrame> frames = SimulatePirouette(placed, impl_->renderer, seed);
+  // The odometry frame is the world frame at the start: bearings relative to
+  // the robot's heading then are odometry bearings less that heading.
+  const double start_heading = frames.front().frame.odometry.heading();
+  std::vector<mapping::HeadedProfile> views;
+  std::vector<std::array<int, localize::kColourClasses>> votes(kBins);
+  for (const SimulatedFrame& frame : frames) {
+    const cv::Mat3b bgr = ToBgrMat(frame.frame.image);
+    const cv::Mat1b mask = impl_->masker.Mask(bgr, frame.world_T_robot);
+    const double heading = frame.frame.odometry.heading() - start_heading;
+    core::ObstacleProfile profile = impl_->extractor.Extract(mask);
+    for (int u = 0; u < static_cast<int>(profile.readings.size()); ++u) {
+      const core::RangeReading& r = profile.readings[static_cast<std::size_t>(u)];
+      if (r.kind == core::ReadingKind::kClear) continue;
+      const localize::ColourClass c = ColumnColour(bgr, mask, u);
+      if (c == localize::ColourClass::kNone) continue;
+      ++votes[static_cast<std::size_t>(BinOf(r.bearing_rad + heading))]
+             [static_cast<std::size_t>(c)];
+    }
+    views.push_back({heading, std::move(profile)});
+  }
+  const mapping::RadialProfile rop = mapping::MergePirouette(views);
+  ObservedPlace out;
+  out.view.ranges_m = rop.Ranges();
+  for (int b = 0; b < kBins; ++b) {
+    const mapping::RadialBin& bin = rop.bins[static_cast<std::size_t>(b)];
+    out.kinds.push_back(bin.kind);
+    const auto& v = votes[static_cast<std::size_t>(b)];
+    const auto best = std::max_element(v.begin(), v.end());
+    out.view.colours.push_back(bin.kind != core::ReadingKind::kClear && *best > 0
+                                   ? static_cast<localize::ColourClass>(best - v.begin())
+                                   : localize::ColourClass::kNone);
+  }
+  return out;
+}
+
+double CoarseCellSize(const sim::World& world) {
+  const double cell = DefaultCellSize(world.robot().radius);
+  explore::PlannerOptions options;
+  options.robot_radius_m = world.robot().radius;
+  return cell * options.CoarseFactor(cell);
+}
+
+double DefaultTableSpacing(const sim::World& world) {
+  return std::max(CoarseCellSize(world), kMinSpacingRadii * world.robot().radius);
+}
+
+localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& observer,
+                                     double spacing_m,
+                                     const std::function<void(int, int)>& progress) {
+  std::vector<Eigen::Vector2d> where;
+  const Eigen::Vector2d size = world.floor().size;
+  for (double y = 0.5 * spacing_m; y < size.y(); y += spacing_m) {
+    for (double x = 0.5 * spacing_m; x < size.x(); x += spacing_m) {
+      if (world.DiscFits({x, y}, world.robot().radius)) where.emplace_back(x, y);
+    }
+  }
+  std::vector<localize::PlaceEntry> entries;
+  for (std::size_t i = 0; i < where.size(); ++i) {
+    const ObservedPlace seen =
+        observer.Observe(core::Pose2(where[i].x(), where[i].y(), 0.0), 1000 + i);
+    entries.push_back({where[i].x(), where[i].y(), 0.0, seen.view, seen.kinds});
+    if (progress) progress(static_cast<int>(i + 1), static_cast<int>(where.size()));
+  }
+  return {world.name(), observer.max_range_m(), std::move(entries)};
+}
+
+PlacesResult MeasurePlaces(const PlacesRequest& request) {
+  if (request.queries < 1) throw core::InputError("", 0, "--queries", "must be at least 1");
+  if (request.spacing_m && !(*request.spacing_m > 0.0 && std::isfinite(*request.spacing_m))) {
+    throw core::InputError("", 0, "--spacing", "must be a number > 0 (metres)");
+  }
+  const sim::World world = sim::LoadWorldFile(request.world_path);
+  PlacesResult result;
+  result.world_name = world.name();
+  result.coarse_cell_m = CoarseCellSize(world);
+  result.spacing_m = request.spacing_m.value_or(DefaultTableSpacing(world));
+  const double max_range =
+      camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
+  PlaceObserver observer(world, request.method, max_range, request.seed);
+  ProgressLine line(request.quiet);
+  const auto start = std::chrono::steady_clock::now();
+
+  localize::PlaceTable table;
+  if (!request.table_path.empty() && std::filesystem::exists(request.table_path)) {
+    table = localize::LoadPlaceTable(request.table_path);
+    if (table.world() != world.name()) {
+      throw core::InputError(
+          request.table_path, 0, "world",
+          "the table is of world '" + table.world() + "', not '" + world.name() + "'");
+    }
+    if (table.entries().empty()) {
+      throw core::InputError(request.table_path, 0, "places", "the table has no places");
+    }
+    result.table_loaded = true;
+  } else {
+    table = BuildPlaceTable(world, observer, result.spacing_m, [&](int done, int total) {
+      line.Show(Seconds(start), [&] {
+        return fmt::format("places {}: table {}/{} pirouettes", world.name(), done, total);
+      });
+    });
+    if (table.entries().empty()) {
+      throw core::InputError(request.world_path, 0, "--spacing",
+                             "no place of the grid has room for the robot");
+    }
+    if (!request.table_path.empty()) localize::SavePlaceTable(table, request.table_path);
+  }
+  result.build_s = Seconds(start);
+  result.table_places = static_cast<int>(table.entries().size());
+  result.max_range_m = table.max_range_m();
+
+  for (localize::SignatureKind kind : localize::kSignatureKinds) result.scores.push_back({kind});
+  const localize::PoseSearch search{request.refine ? kSearchRadiusSpacings * result.spacing_m : 0.0,
+                                    0.5 * result.coarse_cell_m};
+  std::vector<double> heading_error_sum(result.scores.size(), 0.0);
+  std::mt19937_64 rng(request.seed);
+  std::uniform_real_distribution<double> ux(0.0, world.floor().size.x());
+  std::uniform_real_distribution<double> uy(0.0, world.floor().size.y());
+  std::uniform_real_distribution<double> uh(-std::numbers::pi, std::numbers::pi);
+  const auto query_start = std::chrono::steady_clock::now();
+  for (int q = 0; q < request.queries; ++q) {
+    core::Pose2 truth;
+    for (;;) {
+      const Eigen::Vector2d p(ux(rng), uy(rng));
+      const double h = uh(rng);
+      if (world.DiscFits(p, world.robot().radius)) {
+        truth = core::Pose2(p.x(), p.y(), h);
+        break;
+      }
+    }
+    const ObservedPlace seen = observer.Observe(truth, request.seed * 7919 + q);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const localize::PlaceEntry& e : table.entries()) {
+      nearest = std::min(nearest, (Eigen::Vector2d(e.x_m, e.y_m) - truth.translation()).norm());
+    }
+    PlaceQuery record{truth, nearest, 0, {}};
+    for (const core::ReadingKind kind : seen.kinds) {
+      record.seen_bins += kind != core::ReadingKind::kClear ? 1 : 0;
+    }
+    const bool informative = record.seen_bins >= kInformativeBins;
+    result.informative_queries += informative ? 1 : 0;
+    for (std::size_t s = 0; s < result.scores.size(); ++s) {
+      SignatureScore& score = result.scores[s];
+      const std::vector<localize::PlaceMatch> best =
+          table.Nearest(seen.view, score.kind, 1, search);
+      PlaceQuery::Answer answer;
+      answer.entry = best[0].entry;
+      if (best[0].position_m) {
+        // The table place nearest the refined position is the answer.
+        answer.position_error_m = (*best[0].position_m - truth.translation()).norm();
+        double closest = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < table.entries().size(); ++i) {
+          const localize::PlaceEntry& c = table.entries()[i];
+          const double d = (Eigen::Vector2d(c.x_m, c.y_m) - *best[0].position_m).norm();
+          if (d < closest) {
+            closest = d;
+            answer.entry = static_cast<int>(i);
+          }
+        }
+      }
+      const localize::PlaceEntry& e = table.entries()[static_cast<std::size_t>(answer.entry)];
+      answer.off_m = (Eigen::Vector2d(e.x_m, e.y_m) - truth.translation()).norm();
+      if (best[0].heading_rad) {
+        answer.heading_error_deg =
+            std::abs(core::RadToDeg(core::NormalizeAngle(*best[0].heading_rad - truth.heading())));
+      }
+      answer.place_ok = answer.off_m <= nearest + result.coarse_cell_m + 1e-9;
+      answer.heading_ok = answer.place_ok && answer.heading_error_deg &&
+                          *answer.heading_error_deg <= kHeadingToleranceDeg;
+      if (answer.place_ok) {
+        ++score.place_hits;
+        if (answer.heading_error_deg) heading_error_sum[s] += *answer.heading_error_deg;
+      }
+      if (answer.heading_ok) ++score.heading_hits;
+      if (informative) {
+        score.informative_place_hits += answer.place_ok ? 1 : 0;
+        score.informative_heading_hits += answer.heading_ok ? 1 : 0;
+      }
+      record.answers.push_back(answer);
+    }
+    result.query_log.push_back(std::move(record));
+    line.Show(Seconds(start), [&] {
+      std::string text =
+          fmt::format("places {}: query {}/{}", world.name(), q + 1, request.queries);
+      for (const SignatureScore& score : result.scores) {
+        text += fmt::format("  {} {}", localize::SignatureKindName(score.kind), score.place_hits);
+      }
+      return text;
+    });
+  }
+  for (std::size_t s = 0; s < result.scores.size(); ++s) {
+    SignatureScore& score = result.scores[s];
+    if (score.place_hits > 0) {
+      score.mean_heading_error_deg = heading_error_sum[s] / score.place_hits;
+    }
+  }
+  result.queries = request.queries;
+  result.query_s = Seconds(query_start);
+  return result;
+}
+
+nlohmann::json PlacesJson(const PlacesRequest& request, const PlacesResult& result) {
+  nlohmann::json out;
+  out["format"] = "pirouette-places-report/1";
+  out["world"] = result.world_name;
+  out["world_file"] = request.world_path;
+  out["method"] = std::string(MaskSourceName(request.method));
+  out["seed"] = request.seed;
+  out["refine"] = request.refine;
+  out["queries"] = result.queries;
+  out["informative_queries"] = result.informative_queries;
+  out["informative_bins"] = kInformativeBins;
+  out["table"] = {{"places", result.table_places},
+                  {"loaded", result.table_loaded},
+                  {"file", request.table_path},
+                  {"spacing_m", result.spacing_m},
+                  {"max_range_m", result.max_range_m}};
+  out["coarse_cell_m"] = result.coarse_cell_m;
+  out["heading_tolerance_deg"] = kHeadingToleranceDeg;
+  nlohmann::json signatures = nlohmann::json::object();
+  for (const SignatureScore& score : result.scores) {
+    nlohmann::json s;
+    const double n = std::max(1, result.queries);
+    s["place_rate"] = score.place_hits / n;
+    const double informative = std::max(1, result.informative_queries);
+    s["informative_place_rate"] = score.informative_place_hits / informative;
+    s["place_hits"] = score.place_hits;
+    if (localize::SignatureGivesHeading(score.kind)) {
+      s["heading_rate"] = score.heading_hits / n;
+      s["heading_hits"] = score.heading_hits;
+      s["informative_heading_rate"] = score.informative_heading_hits / informative;
+      s["mean_heading_error_deg"] = score.mean_heading_error_deg;
+    } else {
+      s["heading_rate"] = nullptr;
+    }
+    signatures[std::string(localize::SignatureKindName(score.kind))] = s;
+  }
+  out["signatures"] = signatures;
+  nlohmann::json log = nlohmann::json::array();
+  for (const PlaceQuery& q : result.query_log) {
+    nlohmann::json item;
+    item["pose"] = {q.world_T_robot.x(), q.world_T_robot.y(),
+                    core::RadToDeg(q.world_T_robot.heading())};
+    item["nearest_m"] = q.nearest_m;
+    item["seen_bins"] = q.seen_bins;
+    for (std::size_t s = 0; s < q.answers.size() && s < result.scores.size(); ++s) {
+      const PlaceQuery::Answer& a = q.answers[s];
+      nlohmann::json answer = {{"entry", a.entry}, {"off_m", a.off_m}, {"place_ok", a.place_ok}};
+      if (a.position_error_m) answer["position_error_m"] = *a.position_error_m;
+      if (a.heading_error_deg) {
+        answer["heading_error_deg"] = *a.heading_error_deg;
+        answer["heading_ok"] = a.heading_ok;
+      }
+      item[std::string(localize::SignatureKindName(result.scores[s].kind))] = answer;
+    }
+    log.push_back(item);
+  }
+  out["query_log"] = log;
+  out["build_s"] = result.build_s;
+  out["query_s"] = result.query_s;
+  return out;
+}
+
+}  // namespace pirouette::app

@@ -1,0 +1,71 @@
+#include "pirouette/app/place_recognition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "pirouette/core/angle.h"
+#include "pirouette/core/input_error.h"
+#include "pirouette/sim/world_file.h"
+
+namespace pirouette::app {
+namespace {
+
+std::string World(const std::string& name) {
+  return std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml";
+}
+
+TEST(PlaceRecognitionTest, ATurnedPirouetteFindsItsPlaceAndHeading) {
+  const sim::World world = sim::LoadWorldFile(World("soccer_field"));
+  PlaceObserver observer(world, MaskSource::kDefault, 0.6, 1);
+  const ObservedPlace a = observer.Observe(core::Pose2(0.3, 0.3, 0.0), 1);
+  const ObservedPlace b = observer.Observe(core::Pose2(0.3, 0.3, core::DegToRad(100.0)), 2);
+  ASSERT_EQ(a.view.ranges_m.size(), 360u);
+  ASSERT_EQ(a.view.colours.size(), 360u);
+  ASSERT_EQ(a.kinds.size(), 360u);
+  // Some bins hit something coloured (the field's walls or obstacles).
+  int coloured = 0;
+  for (localize::ColourClass c : a.view.colours) coloured += c != localize::ColourClass::kNone;
+  EXPECT_GT(coloured, 30);
+  for (bool use_colour : {false, true}) {
+    const localize::Alignment al = localize::AlignProfiles(b.view, a.view, use_colour);
+    EXPECT_LT(
+        std::abs(core::RadToDeg(core::NormalizeAngle(al.heading_rad - core::DegToRad(100.0)))), 5.0)
+        << use_colour;
+  }
+}
+
+TEST(PlaceRecognitionTest, TheHeadingInvariantSignaturesFindMostPlaces) {
+  PlacesRequest request;
+  request.world_path = World("soccer_field");
+  request.queries = 10;
+  request.seed = 3;
+  request.spacing_m = 0.25;
+  request.quiet = true;
+  const PlacesResult result = MeasurePlaces(request);
+  EXPECT_GT(result.table_places, 10);
+  ASSERT_EQ(result.scores.size(), 4u);
+  int best = 0;
+  for (const SignatureScore& s : result.scores) {
+    EXPECT_LE(s.heading_hits, s.place_hits);
+    if (localize::SignatureGivesHeading(s.kind)) best = std::max(best, s.heading_hits);
+  }
+  EXPECT_GE(best, 8) << "of 10";
+  const nlohmann::json json = PlacesJson(request, result);
+  EXPECT_EQ(json["format"], "pirouette-places-report/1");
+  EXPECT_TRUE(json["signatures"].contains("colour"));
+}
+
+TEST(PlaceRecognitionTest, BadRequestsAreInputErrors) {
+  PlacesRequest request;
+  request.world_path = World("soccer_field");
+  request.queries = 0;
+  EXPECT_THROW(MeasurePlaces(request), core::InputError);
+  request.queries = 1;
+  request.spacing_m = -1.0;
+  EXPECT_THROW(MeasurePlaces(request), core::InputError);
+}
+
+}  // namespace
+}  // namespace pirouette::app

@@ -1,0 +1,202 @@
+#include "pirouette/localize/heading_matcher.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include "pirouette/core/angle.h"
+
+namespace pirouette::localize {
+
+namespace {
+
+// The ray from `origin` along `bearing` through `grid` (see MapProfile).
+MapRay CastRay(const mapping::OccupancyGrid& grid, const Eigen::Vector2d& origin, double bearing,
+               double max_range_m) {
+  const double step = 0.5 * grid.geometry().resolution();
+  const Eigen::Vector2d d(std::cos(bearing), std::sin(bearing));
+  for (double r = 0.0; r <= max_range_m; r += step) {
+    const core::CellIndex c = grid.geometry().CellOf(origin + r * d);
+    const mapping::CellState state = grid.State(c);
+    if (state == mapping::CellState::kOccupied) {
+      return {MapRay::Kind::kHit, (grid.geometry().CellCentre(c) - origin).dot(d)};
+    }
+    if (state != mapping::CellState::kFree) return {MapRay::Kind::kUnknown, r};
+  }
+  return {MapRay::Kind::kClear, max_range_m};
+}
+
+}  // namespace
+
+MapProfile::MapProfile(const mapping::OccupancyGrid& grid, const Eigen::Vector2d& origin,
+                       double max_range_m, int bins)
+    : rays_(static_cast<std::size_t>(bins)) {
+  for (int b = 0; b < bins; ++b) {
+    rays_[static_cast<std::size_t>(b)] =
+        CastRay(grid, origin, 2.0 * std::numbers::pi * (b + 0.5) / bins, max_range_m);
+  }
+}
+
+const MapRay& MapProfile::At(double bearing_rad) const {
+  const double turns = bearing_rad / (2.0 * std::numbers::pi);
+  const double frac = turns - std::floor(turns);
+  const int n = bins();
+  const int b = std::min(n - 1, static_cast<int>(frac * n));
+  return rays_[static_cast<std::size_t>(b)];
+}
+
+namespace {
+
+// How well one (not blind) reading agrees with the map's (known) ray.
+double Agrees(const core::RangeReading& reading, const MapRay& ray,
+              const HeadingMatcherOptions& options) {
+  const bool hit = reading.kind == core::ReadingKind::kHit;
+  if (hit && ray.kind == MapRay::Kind::kHit) {
+    const double sigma = std::max(options.sigma_floor_m, options.sigma_fraction * reading.range_m);
+    const double d = reading.range_m - ray.range_m;
+    return std::exp(-d * d / (2.0 * sigma * sigma));
+  }
+  return !hit && ray.kind == MapRay::Kind::kClear ? 1.0 : 0.0;
+}
+
+}  // namespace
+
+HeadingMatch MatchHeading(const MapProfile& map, const core::ObstacleProfile& profile,
+                          double predicted_heading, double sigma_rad,
+                          const HeadingMatcherOptions& options) {
+  HeadingMatch match;
+  const double sigma = std::max(sigma_rad, options.step_rad);
+  const int n = static_cast<int>(std::ceil(3.0 * sigma / options.step_rad));
+  // The readings whose rays the map knows all over the window.
+  std::vector<const core::RangeReading*> kept;
+  constexpr int kChecks = 8;
+  for (const core::RangeReading& reading : profile.readings) {
+    if (reading.kind == core::ReadingKind::kBlind) continue;
+    bool known = true;
+    for (int k = -kChecks; k <= kChecks && known; ++k) {
+      const double offset = 3.0 * sigma * k / kChecks;
+      known =
+          map.At(predicted_heading + offset + reading.bearing_rad).kind != MapRay::Kind::kUnknown;
+    }
+    if (known) kept.push_back(&reading);
+  }
+  match.compared = static_cast<int>(kept.size());
+  if (match.compared < options.min_compared) return match;
+  const auto sum_at = [&](double offset) {
+    double sum = 0.0;
+    for (const core::RangeReading* r : kept) {
+      sum += Agrees(*r, map.At(predicted_heading + offset + r->bearing_rad), options);
+    }
+    return sum;
+  };
+  double best = -std::numeric_limits<double>::infinity();
+  for (int k = -n; k <= n; ++k) {
+    const double offset = k * options.step_rad;
+    const double objective =
+        sum_at(offset) - options.prior_weight * 0.5 * (offset / sigma) * (offset / sigma);
+    if (objective > best) {
+      best = objective;
+      match.offset_rad = offset;
+    }
+  }
+  match.score = sum_at(match.offset_rad) / match.compared;
+  match.accepted = true;
+  return match;
+}
+
+namespace {
+
+// A view's reading at `bearing` (robot frame), interpolated between the two
+// columns either side when both are of one kind and not blind.
+std::optional<core::RangeReading> ReadingAt(const core::ObstacleProfile& profile, double bearing) {
+  const std::vector<core::RangeReading>& r = profile.readings;
+  // Columns run left to right: bearings decrease.
+  for (std::size_t i = 0; i + 1 < r.size(); ++i) {
+    const double hi = r[i].bearing_rad;
+    const double lo = r[i + 1].bearing_rad;
+    if (bearing > hi || bearing < lo) continue;
+    if (r[i].kind != r[i + 1].kind || r[i].kind == core::ReadingKind::kBlind || hi - lo <= 0.0) {
+      return std::nullopt;
+    }
+    const double t = (hi - bearing) / (hi - lo);
+    core::RangeReading out = r[i];
+    out.bearing_rad = bearing;
+    out.range_m = (1.0 - t) * r[i].range_m + t * r[i + 1].range_m;
+    return out;
+  }
+  return std::nullopt;
+}
+
+// Whether `bearing` (robot frame) lies within the view's columns.
+bool InView(const core::ObstacleProfile& profile, double bearing) {
+  return !profile.readings.empty() && bearing <= profile.readings.front().bearing_rad &&
+         bearing >= profile.readings.back().bearing_rad;
+}
+
+}  // namespace
+
+HeadingMatch MatchToViews(const std::vector<HeadedView>& views,
+                          const core::ObstacleProfile& profile, double predicted_heading,
+                          double sigma_rad, const HeadingMatcherOptions& options) {
+  HeadingMatch match;
+  const double sigma = std::max(sigma_rad, options.step_rad);
+  const int n = static_cast<int>(std::ceil(3.0 * sigma / options.step_rad));
+  // Each kept reading with the view it is compared with: the first view it
+  // falls in at every offset of the window.
+  std::vector<std::pair<const core::RangeReading*, const HeadedView*>> kept;
+  for (const core::RangeReading& reading : profile.readings) {
+    if (reading.kind == core::ReadingKind::kBlind) continue;
+    for (const HeadedView& view : views) {
+      const double base = predicted_heading + reading.bearing_rad - view.heading_rad;
+      if (InView(*view.profile, core::NormalizeAngle(base - 3.0 * sigma)) &&
+          InView(*view.profile, core::NormalizeAngle(base + 3.0 * sigma))) {
+        kept.emplace_back(&reading, &view);
+        break;
+      }
+    }
+  }
+  const auto sum_at = [&](double offset, int* compared) {
+    double sum = 0.0;
+    int count = 0;
+    for (const auto& [reading, view] : kept) {
+      const std::optional<core::RangeReading> other =
+          ReadingAt(*view->profile, core::NormalizeAngle(predicted_heading + offset +
+                                                         reading->bearing_rad - view->heading_rad));
+      if (!other) continue;
+      ++count;
+      const bool hit = reading->kind == core::ReadingKind::kHit;
+      const bool other_hit = other->kind == core::ReadingKind::kHit;
+      if (hit && other_hit) {
+        const double s =
+            std::max(options.view_sigma_floor_m, options.view_sigma_fraction * reading->range_m);
+        const double d = reading->range_m - other->range_m;
+        sum += std::exp(-d * d / (2.0 * s * s));
+      } else if (!hit && !other_hit) {
+        sum += 1.0;
+      }
+    }
+    if (compared != nullptr) *compared = count;
+    return sum;
+  };
+  int compared = 0;
+  sum_at(0.0, &compared);
+  match.compared = compared;
+  if (compared < options.min_compared) return match;
+  double best = -std::numeric_limits<double>::infinity();
+  for (int k = -n; k <= n; ++k) {
+    const double offset = k * options.step_rad;
+    const double objective =
+        sum_at(offset, nullptr) - options.prior_weight * 0.5 * (offset / sigma) * (offset / sigma);
+    if (objective > best) {
+      best = objective;
+      match.offset_rad = offset;
+    }
+  }
+  match.score = sum_at(match.offset_rad, nullptr) / compared;
+  match.accepted = true;
+  return match;
+}
+
+}  // namespace pirouette::localize

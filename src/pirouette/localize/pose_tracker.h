@@ -1,0 +1,80 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <vector>
+
+#include "pirouette/core/obstacle_profile.h"
+#include "pirouette/core/pose2.h"
+#include "pirouette/localize/heading_matcher.h"
+#include "pirouette/mapping/occupancy_grid.h"
+
+namespace pirouette::localize {
+
+// What the tracker assumes of the odometry, and how it matches.
+struct TrackerOptions {
+  // The standard deviation of a turn's error as a fraction of its angle (a
+  // real robot's is unknown; this is generous): the prior of each frame's
+  // heading relative to the frame before.
+  double rotation_fraction = 0.08;
+  // Frames whose odometry positions are closer than this share a stop.
+  double same_stop_m = 0.001;
+  // A stop this many frames long takes a common turn against the map before
+  // it, within ±3 × map_turn_steps angular steps.
+  std::size_t min_frames_for_map_turn = 4;
+  double map_turn_steps = 2.0;
+  HeadingMatcherOptions heading;
+};
+
+// Pose tracking by matching what the camera sees against what it saw, a
+// stop at a time (Taylor, Geva & Boles 2005 name localization as the next
+// step; this is its first part). The robot looks only while it stands (a
+// pirouette, a look before a move) and turns on the spot between the frames
+// of a stop, so they share its position and differ in heading alone: each
+// new frame's heading relative to the stop's earlier frames comes from its
+// readings against theirs along the same bearings (MatchToViews), around
+// what the odometry says it turned. Once the stop has 4 frames, they take a
+// small common turn against the map before the stop (MatchHeading, the beam
+// model). Straight moves are not corrected: matching a stop's position
+// against the map was tried (likelihood field, beam model) and made the
+// maps worse; see the README. The map's frame is the odometry's at the
+// start.
+class PoseTracker {
+ public:
+  explicit PoseTracker(const TrackerOptions& options = {}) : options_(options) {}
+
+  // The map pose of an odometry pose.
+  core::Pose2 ToMap(const core::Pose2& odom_T_robot) const { return map_T_odom_ * odom_T_robot; }
+  const core::Pose2& map_T_odom() const { return map_T_odom_; }
+
+  // Whether a frame at odom_T_robot starts a new stop (the robot moved).
+  bool StartsStop(const core::Pose2& odom_T_robot) const;
+
+  // Tracks a frame taken at odom_T_robot that showed `profile`. `before` is
+  // the map as it was before the stop's first frame (the caller keeps it
+  // when StartsStop). Returns the map poses of all the stop's frames so far,
+  // in order (they may all move): the caller puts them in `before` again.
+  std::vector<core::Pose2> Track(const mapping::OccupancyGrid& before,
+                                 const core::ObstacleProfile& profile,
+                                 const core::Pose2& odom_T_robot);
+
+  int matches() const { return matches_; }    // frames tracked
+  int accepted() const { return accepted_; }  // of them, turned by a match with their stop
+
+ private:
+  struct StopFrame {
+    core::ObstacleProfile profile;
+    core::Pose2 odom;
+    double heading_rad = 0.0;  // in the map
+  };
+
+  TrackerOptions options_;
+  core::Pose2 map_T_odom_;
+  // The stop: its frames and its position.
+  std::vector<StopFrame> stop_;
+  Eigen::Vector2d stop_position_ = Eigen::Vector2d::Zero();
+  int matches_ = 0;
+  int accepted_ = 0;
+};
+
+}  // namespace pirouette::localize

@@ -1,0 +1,140 @@
+// `pirouette locate` as a user runs it: global localization (the kidnapped
+// robot; Taylor, Geva & Boles 2005, §5.3) on a map that `pirouette explore`
+// made, the place table it writes beside the map and reuses, the report, and
+// its answers to bad input.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "run_pirouette.h"
+
+namespace pirouette::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string World(const std::string& name) {
+  return std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml";
+}
+
+std::string Slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// One exploration of the soccer field for the whole suite (about 5 s).
+class LocateCliTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("pirouette_locate_cli_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    const RunResult explored = RunPirouette("explore --world " + World("soccer_field") +
+                                            " --quiet --out " + (dir_ / "soccer").string());
+    ASSERT_EQ(explored.exit_code, 0) << explored.output();
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  static std::string Map() { return (dir_ / "soccer" / "map.yaml").string(); }
+
+  static fs::path dir_;
+};
+
+fs::path LocateCliTest::dir_;
+
+// Found within one coarse cell and 10 degrees of the truth, or "cannot
+// tell"; never wrong.
+void ExpectFoundOrCannotTell(const nlohmann::json& report) {
+  ASSERT_EQ(report["trials"].size(), 1U);
+  const nlohmann::json& t = report["trials"][0];
+  if (t["found"].get<bool>()) {
+    EXPECT_LE(t["position_error_m"].get<double>(), report["coarse_cell_m"].get<double>()) << t;
+    EXPECT_LE(t["heading_error_deg"].get<double>(), 10.0) << t;
+    EXPECT_TRUE(t["right"].get<bool>()) << t;
+  } else {
+    EXPECT_TRUE(t.contains("reason")) << t;
+  }
+}
+
+TEST_F(LocateCliTest, FindsTheRobotOrSaysItCannotAndReusesTheTable) {
+  const fs::path table = dir_ / "places.yaml";
+  int found = 0;
+  int run = 0;
+  for (const char* pose : {"0.75,0.65,30", "0.40,1.10,-120", "1.25,0.30,170"}) {
+    const fs::path out = dir_ / ("report" + std::to_string(run) + ".json");
+    const RunResult r =
+        RunPirouette("locate --map " + Map() + " --world " + World("soccer_field") + " --pose " +
+                     pose + " --quiet --table " + table.string() + " --out " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output();
+    EXPECT_TRUE(r.stdout_only.rfind("found ", 0) == 0 ||
+                r.stdout_only.rfind("cannot tell: ", 0) == 0)
+        << r.stdout_only;
+    const nlohmann::json report = nlohmann::json::parse(Slurp(out));
+    EXPECT_EQ(report["format"], "pirouette-locate-report/1");
+    // The first run builds the table beside the map; the others load it.
+    EXPECT_EQ(report["table_loaded"].get<bool>(), run > 0) << pose;
+    EXPECT_GT(report["table_places"].get<int>(), 10);
+    ExpectFoundOrCannotTell(report);
+    found += report["trials"][0]["found"].get<bool>() ? 1 : 0;
+    ++run;
+  }
+  EXPECT_TRUE(fs::exists(table));
+  // The map has no colours and the camera sees 0.4 m, so the field's
+  // symmetry leaves some poses ambiguous: "cannot tell" is a right answer
+  // there, but at least one of these is found.
+  EXPECT_GE(found, 1);
+}
+
+TEST_F(LocateCliTest, TheSameRunGivesTheSameAnswer) {
+  const std::string command = "locate --map " + Map() + " --world " + World("soccer_field") +
+                              " --pose 0.75,0.65,30 --quiet --seed 3 --table " +
+                              (dir_ / "same.yaml").string();
+  const RunResult a = RunPirouette(command);
+  const RunResult b = RunPirouette(command);
+  ASSERT_EQ(a.exit_code, 0) << a.output();
+  EXPECT_EQ(a.stdout_only, b.stdout_only);
+}
+
+TEST_F(LocateCliTest, DefaultTableGoesBesideTheMap) {
+  const RunResult r = RunPirouette("locate --map " + Map() + " --world " + World("soccer_field") +
+                                   " --pose 0.75,0.65,30 --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.output();
+  EXPECT_TRUE(fs::exists(dir_ / "soccer" / "places.yaml"));
+}
+
+TEST_F(LocateCliTest, BadInputIsRefusedWithExitTwo) {
+  const std::string world = " --world " + World("soccer_field");
+  const RunResult missing = RunPirouette("locate --map " + (dir_ / "nope" / "map.yaml").string() +
+                                         world + " --pose 0.75,0.65,0");
+  EXPECT_EQ(missing.exit_code, 2) << missing.output();
+  EXPECT_NE(missing.stderr_only.find("nope"), std::string::npos) << missing.stderr_only;
+
+  // Inside the green post at (1.10, 0.35).
+  const RunResult wall = RunPirouette("locate --map " + Map() + world + " --pose 1.10,0.35,0");
+  EXPECT_EQ(wall.exit_code, 2) << wall.output();
+  EXPECT_NE(wall.stderr_only.find("--pose"), std::string::npos) << wall.stderr_only;
+
+  const RunResult outside = RunPirouette("locate --map " + Map() + world + " --pose 9,9,0");
+  EXPECT_EQ(outside.exit_code, 2) << outside.output();
+
+  const RunResult neither = RunPirouette("locate --map " + Map() + world);
+  EXPECT_EQ(neither.exit_code, 2) << neither.output();
+
+  const RunResult bad_pose = RunPirouette("locate --map " + Map() + world + " --pose 1,2");
+  EXPECT_EQ(bad_pose.exit_code, 2) << bad_pose.output();
+}
+
+TEST_F(LocateCliTest, HelpTeachesWithAnExample) {
+  const RunResult r = RunPirouette("locate --help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output().find("example: pirouette"), std::string::npos) << r.output();
+}
+
+}  // namespace
+}  // namespace pirouette::testing
