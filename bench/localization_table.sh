@@ -26,17 +26,21 @@ import json, os, sys, collections
 out = sys.argv[1]
 rows = collections.defaultdict(list)
 for d in sorted(os.listdir(out)):
-    r = json.load(open(os.path.join(out, d, "run.json")))
+    path = os.path.join(out, d, "run.json")
+    if not os.path.exists(path):
+        print(f"localization_table: no run.json for {d}", file=sys.stderr)
+        continue
+    r = json.load(open(path))
     name, seed, loc = d.rsplit("-", 2)
     rows[(name, loc)].append(r)
-print("| world | localize @ odometry noise | complete | coverage (mean, worst) | false_free (mean, worst) | wall_error_m (mean, worst) | pose error m (mean) | heading error ° (mean) | s per matched frame |")
+print("| world | localize @ noise | complete | coverage (mean, worst) | false_free (mean, worst) | wall_error_m (mean, worst) | pose error m (mean) | heading error ° (mean) | per matched frame |")
 print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
 for (name, loc), rs in sorted(rows.items()):
     e = [r["eval"] for r in rs]
     mean = lambda xs: sum(xs) / len(xs)
     cov = [x["coverage"] for x in e]; ff = [x["false_free"] for x in e]; we = [x["wall_error_m"] for x in e]
     pe = [r["pose_error"]["mean_m"] for r in rs]; pd = [r["pose_error"]["mean_deg"] for r in rs]
-    t = [r["localization"]["time_per_correction_s"] for r in rs if "localization" in r]
+    t = [r["localization"]["time_per_matched_frame_s"] for r in rs if "localization" in r]
     print(f"| {name} | {loc} | {sum(r['status'] == 'complete' for r in rs)}/{len(rs)} | "
           f"{mean(cov):.3f}, {min(cov):.3f} | {mean(ff):.4f}, {max(ff):.4f} | {mean(we):.4f}, {max(we):.4f} | "
           f"{mean(pe):.3f} | {mean(pd):.1f} | {mean(t) * 1000:.1f} ms |" if t else
@@ -44,3 +48,4 @@ for (name, loc), rs in sorted(rows.items()):
           f"{mean(cov):.3f}, {min(cov):.3f} | {mean(ff):.4f}, {max(ff):.4f} | {mean(we):.4f}, {max(we):.4f} | "
           f"{mean(pe):.3f} | {mean(pd):.1f} | — |")
 PY
+rm -rf "$out"

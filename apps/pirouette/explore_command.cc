@@ -46,9 +46,10 @@ Command AddExploreCommand(CLI::App& parent) {
       ->check(CLI::IsMember({"default", "paper"}))
       ->capture_default_str();
   cmd->add_option("--localize", *localize,
-                  "none: trust the odometry; scan: correct it at every frame by matching what "
-                  "the camera sees against the map so far (experimental: see the README's "
-                  "localization figures before relying on it)")
+                  "none: trust the odometry; scan: correct each frame's heading by matching "
+                  "what the camera sees against the earlier frames of the stop and the map made "
+                  "before it (experimental: see the README's localization figures before "
+                  "relying on it)")
       ->check(CLI::IsMember({"scan", "none"}))
       ->capture_default_str();
   cmd->add_option("--cell", request->options.cell_m,

@@ -73,6 +73,11 @@ class Explorer {
       result_.status = "stuck";
       result_.reason = e.what();
     }
+    try {
+      result_.final_pose = Pose();
+    } catch (const robot::RobotError&) {
+      // A robot that stopped answering has no final pose to give.
+    }
     result_.wall_time_s = Seconds(Clock::now() - start_);
     result_.times.perceive_s = mapper_.perceive_s();
     result_.times.update_s = mapper_.update_s();
@@ -584,8 +589,8 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
       [&](const cv::Mat3b& bgr) { return masker.Mask(bgr, robot.TruePose()); }, watching);
   result.final_true_pose = robot.TruePose();
   result.pose_error = PoseErrorOf(result.frame_poses, truth);
-  if (result.pose_error && !result.path.empty()) {
-    const core::Pose2& final_pose = result.path.back();
+  if (result.pose_error && result.final_pose) {
+    const core::Pose2& final_pose = *result.final_pose;
     result.pose_error->final_m = (final_pose.translation() - robot.TruePose().translation()).norm();
     result.pose_error->final_deg =
         std::abs(core::NormalizeAngle(final_pose.heading() - robot.TruePose().heading())) * 180.0 /

@@ -22,8 +22,9 @@ namespace pirouette::app {
 
 enum class PlannerKind { kDistanceTransform, kFrontier };
 
-// How the explorer keeps its pose: kNone trusts the odometry; kScan matches
-// every frame against the map so far (localize::PoseTracker).
+// How the explorer keeps its pose: kNone trusts the odometry; kScan corrects
+// each frame's heading against the earlier frames of its stop and the map
+// (localize::PoseTracker; experimental, see the README).
 enum class LocalizeKind { kNone, kScan };
 
 // "none" | "scan", the command line's and run.json's names.
@@ -80,8 +81,9 @@ struct StageTimes {
   double localize_s = 0.0;  // matching frames against the map
 };
 
-// How far the robot's belief was from the simulator's truth, over the frames
-// of a run (translation in metres, heading in degrees, absolute).
+// How far the robot's belief was from the simulator's truth (translation in
+// metres, heading in degrees, absolute): the mean and largest over the
+// frames, each as believed when it was taken, and at the end of the run.
 struct PoseError {
   double final_m = 0.0;
   double final_deg = 0.0;
@@ -116,13 +118,18 @@ struct ExplorationResult {
   double path_length_m = 0.0;
   double rotation_deg = 0.0;
   double wall_time_s = 0.0;
+  // Where the robot believed it was at the end (its odometry, corrected by
+  // the tracker); none when the robot stopped answering.
+  std::optional<core::Pose2> final_pose;
   // The simulator's truth at the end; none for a real robot.
   std::optional<core::Pose2> final_true_pose;
   // Against the truth, over the frames; none for a real robot.
   std::optional<PoseError> pose_error;
-  std::vector<core::Pose2> frame_poses;  // where each frame went in the map
-  int matches = 0;                       // frames the tracker matched
-  int corrections = 0;                   // of them, those it corrected
+  // Where the robot believed each frame was taken when it took it (the
+  // tracker may move a stop's earlier frames later, in the map only).
+  std::vector<core::Pose2> frame_poses;
+  int matches = 0;      // frames the tracker saw
+  int corrections = 0;  // of them, those turned by a match with their stop's earlier frames
   StageTimes times;
 };
 

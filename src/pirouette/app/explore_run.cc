@@ -59,14 +59,18 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
     run["localization"] = {
         {"frames_matched", result.matches},
         {"frames_corrected", result.corrections},
-        {"time_per_correction_s",
+        {"time_per_matched_frame_s",
          result.matches > 0 ? Round(result.times.localize_s / result.matches, 1e-6) : 0.0}};
   }
   const auto pose_json = [](const core::Pose2& p) {
     return nlohmann::json::array(
         {Round(p.x(), 1e-4), Round(p.y(), 1e-4), Round(core::RadToDeg(p.heading()), 0.01)});
   };
-  if (!result.path.empty()) run["final_pose"] = pose_json(result.path.back());
+  if (result.final_pose) {
+    run["final_pose"] = pose_json(*result.final_pose);
+  } else if (!result.path.empty()) {
+    run["final_pose"] = pose_json(result.path.back());
+  }
   if (result.final_true_pose) run["final_true_pose"] = pose_json(*result.final_true_pose);
   if (result.pose_error) {
     const PoseError& e = *result.pose_error;

@@ -77,7 +77,12 @@ void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
   core::ObstacleProfile bump;
   bump.max_range_m = setup_.radius_m + setup_.cell_m;
   bump.readings.push_back({0.0, setup_.radius_m + 0.5 * setup_.cell_m, core::ReadingKind::kHit});
-  mapping::InsertProfile(grid_, bump, ToMap(odom_T_robot));
+  const core::Pose2 map_T_robot = ToMap(odom_T_robot);
+  mapping::InsertProfile(grid_, bump, map_T_robot);
+  // With tracking, the stop's frames are put again in the map as it was
+  // before the stop: the bump must be there too (a move that stopped at
+  // contact at once leaves the robot in the same stop).
+  if (before_stop_) mapping::InsertProfile(*before_stop_, bump, map_T_robot);
 }
 
 void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,

@@ -25,7 +25,7 @@ struct MapperSetup {
   double cell_m = 0.0;       // the map's cell (> 0)
   double max_range_m = 0.0;  // readings are trusted out to this range (> 0)
   mapping::OccupancyOptions occupancy;
-  // Pose tracking (scan-to-map matching at every frame); none: the map is
+  // Pose tracking (localize::PoseTracker, frame by frame); none: the map is
   // made at the odometry's poses.
   std::optional<localize::TrackerOptions> tracking;
 };
@@ -40,9 +40,11 @@ using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
 // through the paper's range sensor model (mapping::InsertProfile), with the
 // robot's footprint free; a straight move that ended at contact adds a hit
 // in front of the robot (its bumper); a look that found the way blocked
-// confirms the blocking hits (ConfirmBlocking). With tracking, each frame is
-// first matched against the map so far (localize::PoseTracker) and goes in
-// at the corrected pose: the map's frame is the odometry's at the start, and
+// confirms the blocking hits (ConfirmBlocking). With tracking, each frame's
+// pose is first corrected by the tracker (against the stop's earlier frames,
+// and once the stop has 4 frames against the map before the stop) and the
+// stop's frames, which the tracker may move, are put again in the map as it
+// was before the stop: the map's frame is the odometry's at the start, and
 // ToMap turns any later odometry pose into it.
 class FrameMapper {
  public:
@@ -85,7 +87,7 @@ class FrameMapper {
   // Seconds spent segmenting and reading profiles, and updating the grid.
   double perceive_s() const { return perceive_s_; }
   double update_s() const { return update_s_; }
-  // Seconds spent matching frames against the map (tracking).
+  // Seconds spent tracking (matching frames).
   double localize_s() const { return localize_s_; }
 
  private:

@@ -162,7 +162,8 @@ bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, d
   return true;
 }
 
-std::string MapTableName(const mapping::TrinaryMap& map, double spacing_m, double max_range_m) {
+std::string MapTableName(const mapping::TrinaryMap& map, double robot_radius_m, double spacing_m,
+                         double max_range_m) {
   std::uint64_t h = 1469598103934665603ULL;
   const double geo[3] = {map.geometry.resolution(), map.geometry.origin().x(),
                          map.geometry.origin().y()};
@@ -170,7 +171,8 @@ std::string MapTableName(const mapping::TrinaryMap& map, double spacing_m, doubl
   h = Fnv(h, geo, sizeof(geo));
   h = Fnv(h, size, sizeof(size));
   h = Fnv(h, map.cells.data(), map.cells.size() * sizeof(mapping::CellState));
-  return fmt::format("map {:016x} spacing {:.4f} range {:.4f}", h, spacing_m, max_range_m);
+  return fmt::format("map {:016x} radius {:.4f} spacing {:.4f} range {:.4f}", h, robot_radius_m,
+                     spacing_m, max_range_m);
 }
 
 localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double robot_radius_m,
@@ -193,7 +195,8 @@ localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double r
       entries.push_back(std::move(e));
     }
   }
-  return {MapTableName(map, spacing_m, max_range_m), max_range_m, std::move(entries)};
+  return {MapTableName(map, robot_radius_m, spacing_m, max_range_m), max_range_m,
+          std::move(entries)};
 }
 
 MapAgreement Agreement(const localize::PlaceView& query,
@@ -342,7 +345,8 @@ LocateResult RunLocate(const LocateRequest& request) {
   if (request.pose) PlaceRobot(world, *request.pose, "--pose");  // throws when it does not fit
 
   const auto table_start = std::chrono::steady_clock::now();
-  const std::string name = MapTableName(map, result.spacing_m, result.max_range_m);
+  const std::string name =
+      MapTableName(map, world.robot().radius, result.spacing_m, result.max_range_m);
   localize::PlaceTable table;
   if (std::filesystem::exists(result.table_path)) {
     table = localize::LoadPlaceTable(result.table_path);
@@ -367,7 +371,13 @@ LocateResult RunLocate(const LocateRequest& request) {
     std::uniform_real_distribution<double> ux(0.0, world.floor().size.x());
     std::uniform_real_distribution<double> uy(0.0, world.floor().size.y());
     std::uniform_real_distribution<double> uh(-std::numbers::pi, std::numbers::pi);
-    while (static_cast<int>(truths.size()) < request.random) {
+    // A world where the robot fits almost nowhere is bad input, not a hang.
+    const long max_tries = 10000L * std::max(1, request.random);
+    for (long tries = 0; static_cast<int>(truths.size()) < request.random; ++tries) {
+      if (tries >= max_tries) {
+        throw core::InputError(request.world_path, 0, "",
+                               "the robot fits almost nowhere on this floor: no random poses");
+      }
       const Eigen::Vector2d p(ux(rng), uy(rng));
       const double h = uh(rng);
       if (world.DiscFits(p, world.robot().radius)) truths.emplace_back(p.x(), p.y(), h);

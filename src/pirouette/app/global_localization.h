@@ -41,9 +41,11 @@ MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origi
 bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, double radius_m);
 
 // A name for the map (its geometry and cells, an FNV-1a hash) and the table's
-// parameters: what a saved place table's `world` field holds, so that a table
-// is reused only for the map and settings it was made for.
-std::string MapTableName(const mapping::TrinaryMap& map, double spacing_m, double max_range_m);
+// parameters (the robot's radius, the spacing, the max range): what a saved
+// place table's `world` field holds, so that a table is reused only for the
+// map and settings it was made for.
+std::string MapTableName(const mapping::TrinaryMap& map, double robot_radius_m, double spacing_m,
+                         double max_range_m);
 
 // The place table of a map (Taylor, Geva & Boles 2005, §5.3's "table of
 // signatures and positions", made from the map instead of from pirouettes):

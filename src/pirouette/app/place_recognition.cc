@@ -202,6 +202,12 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
     if (table.entries().empty()) {
       throw core::InputError(request.table_path, 0, "places", "the table has no places");
     }
+    if (std::abs(table.max_range_m() - max_range) > 1e-6) {
+      throw core::InputError(
+          request.table_path, 0, "max_range",
+          fmt::format("the table was made with a max range of {:.4f} m, the camera's is {:.4f} m",
+                      table.max_range_m(), max_range));
+    }
     result.table_loaded = true;
   } else {
     table = BuildPlaceTable(world, observer, result.spacing_m, [&](int done, int total) {
@@ -230,7 +236,11 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
   const auto query_start = std::chrono::steady_clock::now();
   for (int q = 0; q < request.queries; ++q) {
     core::Pose2 truth;
-    for (;;) {
+    for (long tries = 0;; ++tries) {
+      if (tries >= 100000) {
+        throw core::InputError(request.world_path, 0, "",
+                               "the robot fits almost nowhere on this floor: no random poses");
+      }
       const Eigen::Vector2d p(ux(rng), uy(rng));
       const double h = uh(rng);
       if (world.DiscFits(p, world.robot().radius)) {

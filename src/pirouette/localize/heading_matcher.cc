@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
 
 #include "pirouette/core/angle.h"
 
@@ -30,9 +31,22 @@ MapRay CastRay(const mapping::OccupancyGrid& grid, const Eigen::Vector2d& origin
 
 }  // namespace
 
+void HeadingMatcherOptions::Check() const {
+  if (!(step_rad > 0.0) || !(step_rad < 1.0) || !(sigma_floor_m > 0.0) ||
+      !(sigma_fraction >= 0.0) || !(view_sigma_floor_m > 0.0) || !(view_sigma_fraction >= 0.0) ||
+      !(prior_weight >= 0.0) || min_compared < 1) {
+    throw std::invalid_argument(
+        "HeadingMatcherOptions: the step must be in (0, 1) rad, the sigmas' floors > 0, the "
+        "fractions and the prior's weight >= 0 and min_compared >= 1");
+  }
+}
+
 MapProfile::MapProfile(const mapping::OccupancyGrid& grid, const Eigen::Vector2d& origin,
                        double max_range_m, int bins)
-    : rays_(static_cast<std::size_t>(bins)) {
+    : rays_(static_cast<std::size_t>(std::max(bins, 0))) {
+  if (bins < 1 || !(max_range_m >= 0.0) || !std::isfinite(max_range_m)) {
+    throw std::invalid_argument("MapProfile: bins must be >= 1 and the max range finite, >= 0");
+  }
   for (int b = 0; b < bins; ++b) {
     rays_[static_cast<std::size_t>(b)] =
         CastRay(grid, origin, 2.0 * std::numbers::pi * (b + 0.5) / bins, max_range_m);
@@ -66,6 +80,7 @@ double Agrees(const core::RangeReading& reading, const MapRay& ray,
 HeadingMatch MatchHeading(const MapProfile& map, const core::ObstacleProfile& profile,
                           double predicted_heading, double sigma_rad,
                           const HeadingMatcherOptions& options) {
+  options.Check();
   HeadingMatch match;
   const double sigma = std::max(sigma_rad, options.step_rad);
   const int n = static_cast<int>(std::ceil(3.0 * sigma / options.step_rad));
@@ -140,6 +155,7 @@ bool InView(const core::ObstacleProfile& profile, double bearing) {
 HeadingMatch MatchToViews(const std::vector<HeadedView>& views,
                           const core::ObstacleProfile& profile, double predicted_heading,
                           double sigma_rad, const HeadingMatcherOptions& options) {
+  options.Check();
   HeadingMatch match;
   const double sigma = std::max(sigma_rad, options.step_rad);
   const int n = static_cast<int>(std::ceil(3.0 * sigma / options.step_rad));
@@ -194,7 +210,9 @@ HeadingMatch MatchToViews(const std::vector<HeadedView>& views,
       match.offset_rad = offset;
     }
   }
-  match.score = sum_at(match.offset_rad, nullptr) / compared;
+  int compared_there = 0;
+  const double sum = sum_at(match.offset_rad, &compared_there);
+  match.score = compared_there > 0 ? sum / compared_there : 0.0;
   match.accepted = true;
   return match;
 }

@@ -23,6 +23,7 @@ struct MapRay {
 // occupied first: the map cannot say what the camera would see there.
 class MapProfile {
  public:
+  // Throws std::invalid_argument unless bins >= 1 and max_range_m >= 0.
   MapProfile(const mapping::OccupancyGrid& grid, const Eigen::Vector2d& origin, double max_range_m,
              int bins = 3600);
 
@@ -57,6 +58,9 @@ struct HeadingMatcherOptions {
   // Between two views' readings (MatchToViews): σ = max(floor, fraction × range).
   double view_sigma_floor_m = 0.002;
   double view_sigma_fraction = 0.01;
+
+  // Throws std::invalid_argument unless every field is in range.
+  void Check() const;
 };
 
 // The heading of a frame taken at the map profile's origin, by a beam model
@@ -85,7 +89,9 @@ struct HeadedView {
 // agreement minus the prior, as MatchHeading, but without the map's cells
 // in between (a centimetre cell hides the millimetres that tell a degree
 // on a wall seen nearly face on). Only readings that fall inside some view
-// at every offset of the window take part.
+// at both ends of the window take part; one whose view's neighbouring
+// columns differ in kind there (an edge) counts as disagreeing. score is
+// the mean agreement of those compared at the answer.
 HeadingMatch MatchToViews(const std::vector<HeadedView>& views,
                           const core::ObstacleProfile& profile, double predicted_heading,
                           double sigma_rad, const HeadingMatcherOptions& options = {});

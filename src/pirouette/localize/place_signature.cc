@@ -6,6 +6,7 @@
 #include <complex>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <unsupported/Eigen/FFT>
 
 #include "pirouette/mapping/radial_profile.h"
@@ -170,7 +171,10 @@ double ColourSignatureDistance(const ColourSignature& a, const ColourSignature& 
 
 Alignment AlignProfiles(const PlaceView& query, const PlaceView& reference, bool use_colour) {
   const int n = static_cast<int>(query.ranges_m.size());
-  assert(n == static_cast<int>(reference.ranges_m.size()) && n > 0);
+  if (n == 0 || n != static_cast<int>(reference.ranges_m.size())) {
+    throw std::invalid_argument(
+        "AlignProfiles: the profiles must have the same number of bins, > 0");
+  }
   double max_range = 0.0;
   for (int i = 0; i < n; ++i) {
     max_range = std::max({max_range, query.ranges_m[i], reference.ranges_m[i]});

@@ -104,7 +104,8 @@ inline constexpr double kColourMismatchWeight = 0.2;
 // parabola through the best cost and its neighbours. With `use_colour` and
 // both views coloured, the colour classes' disagreement joins the cost, so
 // that a room whose ranges repeat under rotation (a symmetric room) is told
-// apart by the colours of what stands in it. Views must have equal sizes.
+// apart by the colours of what stands in it. Throws std::invalid_argument
+// unless the views have the same number of bins, at least one.
 Alignment AlignProfiles(const PlaceView& query, const PlaceView& reference, bool use_colour);
 
 // `view` (a pirouette's ROP in its robot's frame) as it would look from

@@ -101,6 +101,9 @@ PlaceTable::PlaceTable(std::string world, double max_range_m, std::vector<PlaceE
 
 std::vector<PlaceMatch> PlaceTable::Nearest(const PlaceView& query, SignatureKind kind, int k,
                                             const PoseSearch& search) const {
+  if (query.ranges_m.size() != static_cast<std::size_t>(mapping::kRadialProfileBins)) {
+    throw std::invalid_argument("PlaceTable::Nearest: a query has one range a degree");
+  }
   const int n = static_cast<int>(entries_.size());
   std::vector<PlaceMatch> all(static_cast<std::size_t>(n));
   const auto sort_take = [&all](int count) {

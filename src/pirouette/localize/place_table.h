@@ -67,7 +67,8 @@ class PlaceTable {
   // by their heading-invariant distance, align them all (AlignProfiles, with
   // colour for kColour), and refine the best kRefinedCandidates by AlignPose
   // (search.radius_m, search.min_step_m), ranked by its cost: each match then
-  // also has the query's position.
+  // also has the query's position. Throws std::invalid_argument unless the
+  // query has mapping::kRadialProfileBins ranges.
   std::vector<PlaceMatch> Nearest(const PlaceView& query, SignatureKind kind, int k = 1,
                                   const PoseSearch& search = {}) const;
 

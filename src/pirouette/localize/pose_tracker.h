@@ -19,8 +19,9 @@ struct TrackerOptions {
   double rotation_fraction = 0.08;
   // Frames whose odometry positions are closer than this share a stop.
   double same_stop_m = 0.001;
-  // A stop this many frames long takes a common turn against the map before
-  // it, within ±3 × map_turn_steps angular steps.
+  // From its this-many-th frame on, at every frame, a stop takes a common
+  // turn against the map before it, each within ±3 × map_turn_steps angular
+  // steps of where the last one left it.
   std::size_t min_frames_for_map_turn = 4;
   double map_turn_steps = 2.0;
   HeadingMatcherOptions heading;
