@@ -56,6 +56,12 @@ Command AddLocateCommand(CLI::App& parent) {
             request->method = *parsed;
             if (pose_option->count() > 0) request->pose = ParsePose(*pose, "--pose");
             const app::LocateResult result = app::RunLocate(*request);
+            if (result.table_replaced) {
+              std::fprintf(stderr,
+                           "note: %s held a place table made for another map or settings; "
+                           "replaced it\n",
+                           result.table_path.c_str());
+            }
             std::fprintf(stderr, "table %s: %d places (spacing %.3f m)%s\n",
                          result.table_path.c_str(), result.table_places, result.spacing_m,
                          result.table_loaded ? ", loaded" : ", built");

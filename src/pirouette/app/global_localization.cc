@@ -8,13 +8,14 @@
 #include <filesystem>
 #include <limits>
 #include <numbers>
-#include <random>
 
 #include "pirouette/app/exploration.h"
 #include "pirouette/app/map_file.h"
 #include "pirouette/app/place_recognition.h"
+#include "pirouette/app/place_table_file.h"
 #include "pirouette/app/progress_line.h"
 #include "pirouette/app/simulated_pirouette.h"
+#include "pirouette/app/stage_timer.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
@@ -24,12 +25,10 @@
 namespace pirouette::app {
 namespace {
 
+using Clock = std::chrono::steady_clock;
+
 constexpr int kBins = mapping::kRadialProfileBins;
 constexpr double kBinRad = 2.0 * std::numbers::pi / kBins;
-
-double Seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-}
 
 int Wrap(int b) { return ((b % kBins) + kBins) % kBins; }
 
@@ -199,13 +198,6 @@ localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double r
           std::move(entries)};
 }
 
-MapAgreement Agreement(const localize::PlaceView& query,
-                       const std::vector<core::ReadingKind>& kinds, const MapView& map_view,
-                       double heading_rad, double /*max_range_m*/, double cell_m) {
-  const int shift = static_cast<int>(std::lround(core::NormalizeAngle(heading_rad) / kBinRad));
-  return AgreementAtShift(query, kinds, map_view, shift, std::max(kAgreementSigmaFloorM, cell_m));
-}
-
 LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::PlaceTable& table,
                     const localize::PlaceView& query, const std::vector<core::ReadingKind>& kinds,
                     double spacing_m, double coarse_cell_m, const LocateOptions& options) {
@@ -231,21 +223,14 @@ LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::PlaceTable& 
   }
   std::sort(coarse.begin(), coarse.end(),
             [](const Coarse& a, const Coarse& b) { return a.score > b.score; });
-  // The best, spread at least a spacing apart.
-  std::vector<Coarse> picked;
-  for (const Coarse& c : coarse) {
-    if (static_cast<int>(picked.size()) >= options.candidates) break;
-    const localize::PlaceEntry& e = table.entries()[static_cast<std::size_t>(c.entry)];
-    bool near = false;
-    for (const Coarse& p : picked) {
-      const localize::PlaceEntry& q = table.entries()[static_cast<std::size_t>(p.entry)];
-      near = near || std::hypot(e.x_m - q.x_m, e.y_m - q.y_m) < 0.99 * spacing_m;
-    }
-    if (!near) picked.push_back(c);
+  // The best. (The table's places lie a spacing apart, on BuildMapPlaceTable's
+  // grid, so they need no spreading.)
+  if (static_cast<int>(coarse.size()) > options.candidates) {
+    coarse.resize(static_cast<std::size_t>(std::max(0, options.candidates)));
   }
   // Fine: a pattern search of position, the full heading search at each.
   const double max_range = table.max_range_m();
-  for (const Coarse& c : picked) {
+  for (const Coarse& c : coarse) {
     const localize::PlaceEntry& e = table.entries()[static_cast<std::size_t>(c.entry)];
     Eigen::Vector2d best_p(e.x_m, e.y_m);
     auto eval = [&](const Eigen::Vector2d& p) {
@@ -344,13 +329,14 @@ LocateResult RunLocate(const LocateRequest& request) {
           : request.table_path;
   if (request.pose) PlaceRobot(world, *request.pose, "--pose");  // throws when it does not fit
 
-  const auto table_start = std::chrono::steady_clock::now();
+  const auto table_start = Clock::now();
   const std::string name =
       MapTableName(map, world.robot().radius, result.spacing_m, result.max_range_m);
   localize::PlaceTable table;
   if (std::filesystem::exists(result.table_path)) {
-    table = localize::LoadPlaceTable(result.table_path);
+    table = LoadPlaceTable(result.table_path);
     result.table_loaded = table.world() == name && !table.entries().empty();
+    result.table_replaced = !result.table_loaded;
   }
   if (!result.table_loaded) {
     table = BuildMapPlaceTable(map, world.robot().radius, result.spacing_m, result.max_range_m);
@@ -358,44 +344,27 @@ LocateResult RunLocate(const LocateRequest& request) {
       throw core::InputError(request.map_path, 0, "",
                              "the map has no free place where the robot fits");
     }
-    localize::SavePlaceTable(table, result.table_path);
+    SavePlaceTable(table, result.table_path);
   }
-  result.table_s = Seconds(table_start);
+  result.table_s = Seconds(Clock::now() - table_start);
   result.table_places = static_cast<int>(table.entries().size());
 
-  std::vector<core::Pose2> truths;
-  if (request.pose) {
-    truths.push_back(*request.pose);
-  } else {
-    std::mt19937_64 rng(request.seed);
-    std::uniform_real_distribution<double> ux(0.0, world.floor().size.x());
-    std::uniform_real_distribution<double> uy(0.0, world.floor().size.y());
-    std::uniform_real_distribution<double> uh(-std::numbers::pi, std::numbers::pi);
-    // A world where the robot fits almost nowhere is bad input, not a hang.
-    const long max_tries = 10000L * std::max(1, request.random);
-    for (long tries = 0; static_cast<int>(truths.size()) < request.random; ++tries) {
-      if (tries >= max_tries) {
-        throw core::InputError(request.world_path, 0, "",
-                               "the robot fits almost nowhere on this floor: no random poses");
-      }
-      const Eigen::Vector2d p(ux(rng), uy(rng));
-      const double h = uh(rng);
-      if (world.DiscFits(p, world.robot().radius)) truths.emplace_back(p.x(), p.y(), h);
-    }
-  }
+  const std::vector<core::Pose2> truths =
+      request.pose ? std::vector<core::Pose2>{*request.pose}
+                   : RandomRobotPoses(world, request.random, request.seed, request.world_path);
 
   PlaceObserver observer(world, request.method, result.max_range_m, request.seed);
   ProgressLine line(request.quiet);
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   double locate_s = 0.0;
   for (std::size_t q = 0; q < truths.size(); ++q) {
     const ObservedPlace seen = observer.Observe(truths[q], request.seed * 7919 + q);
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     LocateTrial trial;
     trial.truth = truths[q];
     trial.answer = Locate(map, table, seen.view, seen.kinds, result.spacing_m, result.coarse_cell_m,
                           request.options);
-    locate_s += Seconds(t0);
+    locate_s += Seconds(Clock::now() - t0);
     trial.position_error_m =
         (trial.answer.world_T_robot.translation() - trial.truth.translation()).norm();
     trial.heading_error_deg = std::abs(core::RadToDeg(
@@ -407,7 +376,7 @@ LocateResult RunLocate(const LocateRequest& request) {
     result.cannot_tell += trial.answer.found ? 0 : 1;
     result.wrong += trial.answer.found && !close ? 1 : 0;
     result.trials.push_back(std::move(trial));
-    line.Show(Seconds(start), [&] {
+    line.Show(Seconds(Clock::now() - start), [&] {
       return fmt::format("locate {}: {}/{} pirouettes, {} found right, {} cannot tell, {} wrong",
                          world.name(), q + 1, truths.size(), result.found_right, result.cannot_tell,
                          result.wrong);

@@ -62,26 +62,21 @@ struct MapAgreement {
   int compared = 0;    // bins compared (the query's and the map's both known)
 };
 
-// The query's bin b looks along world bearing heading + b°; it is compared
-// with the map's ray there: hit against hit by exp(−d²/2σ²),
-// σ = max(kAgreementSigmaFloorM, kAgreementSigmaFraction × range, one map
-// cell); clear against clear agrees (1); hit against clear or clear against
-// a hit nearer than the max range less 2σ disagrees (0); a blind bin (an
-// obstacle somewhere nearer than its range) agrees with a map hit not
-// farther than its range + 2σ, and disagrees with a clear ray. Rays the
-// map calls unknown are left out. The score is a weighted mean: a bin
-// clear in both weighs kClearWeight (an open floor is clear almost
-// everywhere, which tells places apart poorly), every other bin 1.
+// How Locate scores a pose (its MapAgreement): the query's bin b looks along
+// world bearing heading + b°; it is compared with the map's ray there: hit against hit by
+// exp(−d²/2σ²), σ = max(kAgreementSigmaFloorM, kAgreementSigmaFraction × range, one map cell);
+// clear against clear agrees (1); hit against clear or clear against a hit nearer than the max
+// range less 2σ disagrees (0); a blind bin (an obstacle somewhere nearer than its range) agrees
+// with a map hit not farther than its range + 2σ, and disagrees with a clear ray. Rays the map
+// calls unknown are left out. The score is a weighted mean: a bin clear in both weighs kClearWeight
+// (an open floor is clear almost everywhere, which tells places apart poorly), every other bin 1.
 inline constexpr double kAgreementSigmaFloorM = 0.02;
 inline constexpr double kAgreementSigmaFraction = 0.05;
 inline constexpr double kClearWeight = 0.25;
-MapAgreement Agreement(const localize::PlaceView& query,
-                       const std::vector<core::ReadingKind>& kinds, const MapView& map_view,
-                       double heading_rad, double max_range_m, double cell_m);
 
 // The thresholds of an answer.
 struct LocateOptions {
-  int candidates = 30;                  // table places refined (best coarse scores, spread apart)
+  int candidates = 30;                  // table places refined (the best coarse scores)
   double min_agreement = 0.85;          // the best's score must reach this
   double min_margin = 0.08;             // above the best candidate more than one coarse cell away
   int min_compared = 240;               // bins (of 360) the best must have compared
@@ -107,13 +102,14 @@ struct LocateAnswer {
   std::vector<LocateCandidate> candidates;  // refined, best first
 };
 
-// Finds a pirouette's pose on a map: scores every table place at every
-// one-degree heading against the query (Agreement with the place's stored
-// view), refines the best options.candidates (spread at least a table
-// spacing apart) by a local search of position (down to a map cell) and
-// heading (down to a quarter degree) against CastMapView, and answers the
-// best when its score, compared bins and margin over every candidate more
-// than `coarse_cell_m` away pass `options`; else not found, with the reason.
+// Finds a pirouette's pose on a map: scores every place of `table` (the
+// map's, as BuildMapPlaceTable makes it at `spacing_m`) at every one-degree
+// heading against the query (the agreement above, with the place's stored
+// view), refines the best options.candidates places by a local search of
+// position (down to a map cell) and heading (down to a quarter degree)
+// against CastMapView, and answers the best when its score, compared bins and
+// margin over every candidate more than `coarse_cell_m` away pass `options`;
+// else not found, with the reason.
 LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::PlaceTable& table,
                     const localize::PlaceView& query, const std::vector<core::ReadingKind>& kinds,
                     double spacing_m, double coarse_cell_m, const LocateOptions& options = {});
@@ -142,6 +138,9 @@ struct LocateTrial {
 struct LocateResult {
   std::string table_path;
   bool table_loaded = false;
+  // table_path held a place table made for another map or settings (or with
+  // no places), which this run replaced.
+  bool table_replaced = false;
   int table_places = 0;
   double spacing_m = 0.0;
   double coarse_cell_m = 0.0;
@@ -157,8 +156,9 @@ struct LocateResult {
 // `pirouette locate`: reads the map (app::ReadRosMap) and the world, loads the
 // map's place table from request.table_path when the file exists and was made
 // for this map and settings (else builds it with BuildMapPlaceTable at
-// DefaultTableSpacing and writes it there), then for the pose (or for
-// request.random random poses, seeded) makes one simulated pirouette
+// DefaultTableSpacing and writes it there, result.table_replaced when a file
+// was there), then for the pose (or for request.random random poses:
+// RandomRobotPoses with request.seed) makes one simulated pirouette
 // (PlaceObserver; the robot knows nothing of the pose) and Locates it.
 // Throws core::InputError for a bad map, world, pose (the robot does not fit:
 // "--pose") or count (exit 2).

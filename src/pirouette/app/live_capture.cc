@@ -16,6 +16,7 @@
 #include "pirouette/app/atomic_file.h"
 #include "pirouette/app/image_io.h"
 #include "pirouette/app/segment_image.h"
+#include "pirouette/app/stage_timer.h"
 #include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
@@ -42,8 +43,6 @@ const cv::Vec3b kTextColour(230, 230, 230);  // caption text
 constexpr int kStripHeight = 48;    // the range bars, pixels
 constexpr int kCaptionLine = 16;    // one caption line, pixels
 constexpr double kFontScale = 0.9;  // cv::FONT_HERSHEY_PLAIN
-
-double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
 const cv::Vec3b& KindColour(core::ReadingKind kind) {
   switch (kind) {

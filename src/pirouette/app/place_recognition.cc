@@ -9,12 +9,13 @@
 #include <filesystem>
 #include <limits>
 #include <numbers>
-#include <random>
 
 #include "pirouette/app/exploration.h"
 #include "pirouette/app/image_io.h"
+#include "pirouette/app/place_table_file.h"
 #include "pirouette/app/progress_line.h"
 #include "pirouette/app/simulated_pirouette.h"
+#include "pirouette/app/stage_timer.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
@@ -27,6 +28,8 @@
 
 namespace pirouette::app {
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 constexpr int kBins = mapping::kRadialProfileBins;
 
@@ -65,10 +68,6 @@ localize::ColourClass ColumnColour(const cv::Mat3b& bgr, const cv::Mat1b& mask, 
   }
   const auto mean = [&](int c) { return static_cast<std::uint8_t>(std::lround(sum[c] / n)); };
   return localize::ClassifyColour(core::Rgb{mean(2), mean(1), mean(0)});
-}
-
-double Seconds(std::chrono::steady_clock::time_point since) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
 }  // namespace
@@ -189,11 +188,11 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
       camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
   PlaceObserver observer(world, request.method, max_range, request.seed);
   ProgressLine line(request.quiet);
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
 
   localize::PlaceTable table;
   if (!request.table_path.empty() && std::filesystem::exists(request.table_path)) {
-    table = localize::LoadPlaceTable(request.table_path);
+    table = LoadPlaceTable(request.table_path);
     if (table.world() != world.name()) {
       throw core::InputError(
           request.table_path, 0, "world",
@@ -211,7 +210,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
     result.table_loaded = true;
   } else {
     table = BuildPlaceTable(world, observer, result.spacing_m, [&](int done, int total) {
-      line.Show(Seconds(start), [&] {
+      line.Show(Seconds(Clock::now() - start), [&] {
         return fmt::format("places {}: table {}/{} pirouettes", world.name(), done, total);
       });
     });
@@ -219,9 +218,9 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
       throw core::InputError(request.world_path, 0, "--spacing",
                              "no place of the grid has room for the robot");
     }
-    if (!request.table_path.empty()) localize::SavePlaceTable(table, request.table_path);
+    if (!request.table_path.empty()) SavePlaceTable(table, request.table_path);
   }
-  result.build_s = Seconds(start);
+  result.build_s = Seconds(Clock::now() - start);
   result.table_places = static_cast<int>(table.entries().size());
   result.max_range_m = table.max_range_m();
 
@@ -229,25 +228,11 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
   const localize::PoseSearch search{request.refine ? kSearchRadiusSpacings * result.spacing_m : 0.0,
                                     0.5 * result.coarse_cell_m};
   std::vector<double> heading_error_sum(result.scores.size(), 0.0);
-  std::mt19937_64 rng(request.seed);
-  std::uniform_real_distribution<double> ux(0.0, world.floor().size.x());
-  std::uniform_real_distribution<double> uy(0.0, world.floor().size.y());
-  std::uniform_real_distribution<double> uh(-std::numbers::pi, std::numbers::pi);
-  const auto query_start = std::chrono::steady_clock::now();
+  const auto query_start = Clock::now();
+  const std::vector<core::Pose2> truths =
+      RandomRobotPoses(world, request.queries, request.seed, request.world_path);
   for (int q = 0; q < request.queries; ++q) {
-    core::Pose2 truth;
-    for (long tries = 0;; ++tries) {
-      if (tries >= 100000) {
-        throw core::InputError(request.world_path, 0, "",
-                               "the robot fits almost nowhere on this floor: no random poses");
-      }
-      const Eigen::Vector2d p(ux(rng), uy(rng));
-      const double h = uh(rng);
-      if (world.DiscFits(p, world.robot().radius)) {
-        truth = core::Pose2(p.x(), p.y(), h);
-        break;
-      }
-    }
+    const core::Pose2& truth = truths[static_cast<std::size_t>(q)];
     const ObservedPlace seen = observer.Observe(truth, request.seed * 7919 + q);
     double nearest = std::numeric_limits<double>::infinity();
     for (const localize::PlaceEntry& e : table.entries()) {
@@ -299,7 +284,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
       record.answers.push_back(answer);
     }
     result.query_log.push_back(std::move(record));
-    line.Show(Seconds(start), [&] {
+    line.Show(Seconds(Clock::now() - start), [&] {
       std::string text =
           fmt::format("places {}: query {}/{}", world.name(), q + 1, request.queries);
       for (const SignatureScore& score : result.scores) {
@@ -315,7 +300,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
     }
   }
   result.queries = request.queries;
-  result.query_s = Seconds(query_start);
+  result.query_s = Seconds(Clock::now() - query_start);
   return result;
 }
 

@@ -138,7 +138,8 @@ struct PlacesResult {
 // `pirouette places`: builds the place table of the world (or loads
 // request.table_path when that file exists, and saves the table there when it
 // does not), then queries it from request.queries random poses where the
-// robot fits, with random headings (request.seed). For each signature, the
+// robot fits, with random headings (RandomRobotPoses with request.seed). For
+// each signature, the
 // place is right when the best entry lies within one coarse cell of the
 // truly nearest entry's distance from the true position (|e − p| ≤
 // min_e' |e' − p| + coarse cell), and the heading is right when, besides,

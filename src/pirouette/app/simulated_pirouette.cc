@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Core>
 #include <cassert>
 #include <numbers>
+#include <random>
 
 #include "pirouette/core/input_error.h"
 #include "pirouette/sim/sim_robot.h"
@@ -23,6 +25,29 @@ sim::World PlaceRobot(const sim::World& world, const core::Pose2& world_T_robot,
   sim::RobotSpec robot = world.robot();
   robot.start = world_T_robot;
   return {world.name(), world.floor(), world.walls(), world.obstacles(), world.light(), robot};
+}
+
+std::vector<core::Pose2> RandomRobotPoses(const sim::World& world, int count, std::uint64_t seed,
+                                          const std::string& what) {
+  std::vector<core::Pose2> poses;
+  if (count <= 0) return poses;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(0.0, world.floor().size.x());
+  std::uniform_real_distribution<double> uy(0.0, world.floor().size.y());
+  std::uniform_real_distribution<double> uh(-std::numbers::pi, std::numbers::pi);
+  const long max_tries = kRandomPoseTries * count;
+  for (long tries = 0; static_cast<int>(poses.size()) < count; ++tries) {
+    if (tries >= max_tries) {
+      throw core::InputError(what, 0, "",
+                             "the robot fits almost nowhere on this floor: no random poses");
+    }
+    // The order of ux's and uy's draws is the compiler's (an argument list);
+    // this expression is kept as the reports' poses were drawn with it.
+    const Eigen::Vector2d p(ux(rng), uy(rng));
+    const double h = uh(rng);
+    if (world.DiscFits(p, world.robot().radius)) poses.emplace_back(p.x(), p.y(), h);
+  }
+  return poses;
 }
 
 std::vector<SimulatedFrame> SimulatePirouette(const sim::World& world, sim::Renderer& renderer,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "pirouette/core/pose2.h"
@@ -24,6 +25,20 @@ struct SimulatedFrame {
 // not fit there.
 sim::World PlaceRobot(const sim::World& world, const core::Pose2& world_T_robot,
                       const std::string& what);
+
+// Tries, per pose asked for, that RandomRobotPoses makes before it gives up.
+inline constexpr long kRandomPoseTries = 100000;
+
+// `count` (>= 0) random poses where the robot's disc fits the world
+// (sim::World::DiscFits): each try draws a position uniform over the floor and
+// a heading uniform in [-π, π) from one std::mt19937_64 seeded with `seed`, and
+// a try that does not fit is dropped. The same world and seed give the same
+// poses, and a smaller count a prefix of them. Throws core::InputError
+// (naming `what`, e.g. the world file) when kRandomPoseTries × count tries
+// found fewer: a world where the robot fits almost nowhere is bad input, not a
+// hang.
+std::vector<core::Pose2> RandomRobotPoses(const sim::World& world, int count, std::uint64_t seed,
+                                          const std::string& what);
 
 // One pirouette of the simulated robot (sim::SimRobot, with the world's
 // odometry noise drawn from `seed`) starting at world's robot start: a frame,

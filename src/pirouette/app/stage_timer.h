@@ -4,12 +4,17 @@
 
 namespace pirouette::app {
 
+// A steady-clock duration in seconds.
+inline double Seconds(std::chrono::steady_clock::duration d) {
+  return std::chrono::duration<double>(d).count();
+}
+
 // Adds the wall time from construction to destruction, in seconds, to a
 // counter: where the time of a run goes, stage by stage.
 class StageTimer {
  public:
   explicit StageTimer(double& total_s) : total_s_(total_s), start_(Clock::now()) {}
-  ~StageTimer() { total_s_ += std::chrono::duration<double>(Clock::now() - start_).count(); }
+  ~StageTimer() { total_s_ += Seconds(Clock::now() - start_); }
   StageTimer(const StageTimer&) = delete;
   StageTimer& operator=(const StageTimer&) = delete;
 

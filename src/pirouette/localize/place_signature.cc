@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <unsupported/Eigen/FFT>
 
+#include "pirouette/core/angle.h"
 #include "pirouette/mapping/radial_profile.h"
 
 namespace pirouette::localize {
@@ -212,10 +213,7 @@ Alignment AlignProfiles(const PlaceView& query, const PlaceView& reference, bool
   const double offset =
       curvature > 1e-15 ? std::clamp(0.5 * (c0 - c2) / curvature, -0.5, 0.5) : 0.0;
   const double bin_rad = 2.0 * std::numbers::pi / n;
-  double heading = (best + offset) * bin_rad;
-  heading = std::remainder(heading, 2.0 * std::numbers::pi);
-  if (heading <= -std::numbers::pi) heading += 2.0 * std::numbers::pi;
-  return {heading, c1};
+  return {core::NormalizeAngle((best + offset) * bin_rad), c1};
 }
 
 PlaceView Reproject(const PlaceView& view, const Eigen::Vector2d& origin_m, double max_range_m) {

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/localize/test_places.h"
 #include "pirouette/mapping/radial_profile.h"
 
 namespace pirouette::localize {
@@ -21,11 +22,7 @@ PlaceView RoomView(double px, double py, double heading_deg, double w = 1.5, dou
   for (int b = 0; b < kBins; ++b) {
     const double a = core::DegToRad(heading_deg + b + 0.5);
     const double c = std::cos(a), s = std::sin(a);
-    double t = 1e9;
-    if (c > 1e-12) t = std::min(t, (w - px) / c);
-    if (c < -1e-12) t = std::min(t, -px / c);
-    if (s > 1e-12) t = std::min(t, (h - py) / s);
-    if (s < -1e-12) t = std::min(t, -py / s);
+    const double t = test_places::WallRange(px, py, a, w, h);
     const double range = std::min(t, 1.2);
     view.ranges_m.push_back(range);
     const double hx = px + t * c;

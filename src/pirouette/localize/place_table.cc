@@ -1,86 +1,16 @@
 #include "pirouette/localize/place_table.h"
 
-#include <yaml-cpp/yaml.h>
-
-#include <unistd.h>
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <numbers>
-#include <numeric>
-#include <sstream>
 #include <stdexcept>
 
-#include "pirouette/core/input_error.h"
+#include "pirouette/core/angle.h"
 #include "pirouette/mapping/radial_profile.h"
 
 namespace pirouette::localize {
 namespace {
 
 constexpr int kBins = mapping::kRadialProfileBins;
-
-char KindChar(core::ReadingKind kind) {
-  switch (kind) {
-    case core::ReadingKind::kHit:
-      return 'h';
-    case core::ReadingKind::kClear:
-      return 'c';
-    case core::ReadingKind::kBlind:
-      return 'b';
-  }
-  return 'h';
-}
-
-std::optional<core::ReadingKind> KindFromChar(char c) {
-  switch (c) {
-    case 'h':
-      return core::ReadingKind::kHit;
-    case 'c':
-      return core::ReadingKind::kClear;
-    case 'b':
-      return core::ReadingKind::kBlind;
-    default:
-      return std::nullopt;
-  }
-}
-
-double Wrap(double a) {
-  double w = std::remainder(a, 2.0 * std::numbers::pi);
-  if (w <= -std::numbers::pi) w += 2.0 * std::numbers::pi;
-  return w;
-}
-
-// Reads YAML field by field, naming the file, line and field in errors.
-struct Reader {
-  const std::string& path;
-
-  [[noreturn]] void Fail(const YAML::Node& node, const std::string& field,
-                         const std::string& problem) const {
-    throw core::InputError(path, node.IsDefined() ? node.Mark().line + 1 : 0, field, problem);
-  }
-
-  YAML::Node Field(const YAML::Node& map, const std::string& key, const std::string& field) const {
-    const YAML::Node node = map[key];
-    if (!node) Fail(map, field, "missing");
-    return node;
-  }
-
-  template <typename T>
-  T As(const YAML::Node& node, const std::string& field, const char* what) const {
-    try {
-      return node.as<T>();
-    } catch (const YAML::Exception&) {
-      Fail(node, field, std::string("must be ") + what);
-    }
-  }
-
-  double Number(const YAML::Node& node, const std::string& field) const {
-    const auto v = As<double>(node, field, "a number");
-    if (!std::isfinite(v)) Fail(node, field, "must be a finite number");
-    return v;
-  }
-};
 
 }  // namespace
 
@@ -149,7 +79,8 @@ std::vector<PlaceMatch> PlaceTable::Nearest(const PlaceView& query, SignatureKin
         sort_take(k);
         for (PlaceMatch& m : all) {
           const PlaceEntry& e = entries_[static_cast<std::size_t>(m.entry)];
-          m.heading_rad = Wrap(e.heading_rad + AlignProfiles(query, e.view, false).heading_rad);
+          m.heading_rad =
+              core::NormalizeAngle(e.heading_rad + AlignProfiles(query, e.view, false).heading_rad);
         }
         return all;
       }
@@ -158,7 +89,7 @@ std::vector<PlaceMatch> PlaceTable::Nearest(const PlaceView& query, SignatureKin
         const PlaceEntry& e = entries_[static_cast<std::size_t>(m.entry)];
         const Alignment a = AlignProfiles(query, e.view, colour);
         m.distance = a.cost;
-        m.heading_rad = Wrap(e.heading_rad + a.heading_rad);
+        m.heading_rad = core::NormalizeAngle(e.heading_rad + a.heading_rad);
       }
       if (!refine) {
         sort_take(k);
@@ -171,7 +102,7 @@ std::vector<PlaceMatch> PlaceTable::Nearest(const PlaceView& query, SignatureKin
             AlignPose(query, e.view, max_range_m_, search.radius_m, search.min_step_m, colour);
         const double c = std::cos(e.heading_rad), s = std::sin(e.heading_rad);
         m.distance = a.cost;
-        m.heading_rad = Wrap(e.heading_rad + a.heading_rad);
+        m.heading_rad = core::NormalizeAngle(e.heading_rad + a.heading_rad);
         m.position_m = Eigen::Vector2d(e.x_m + c * a.position_m.x() - s * a.position_m.y(),
                                        e.y_m + s * a.position_m.x() + c * a.position_m.y());
       }
@@ -180,123 +111,6 @@ std::vector<PlaceMatch> PlaceTable::Nearest(const PlaceView& query, SignatureKin
     }
   }
   return {};
-}
-
-void SavePlaceTable(const PlaceTable& table, const std::string& path) {
-  std::ostringstream out;
-  out.precision(6);
-  out << "format: " << kPlaceTableFormat << "\n";
-  {
-    YAML::Emitter world;  // quoted as YAML needs
-    world << YAML::DoubleQuoted << table.world();
-    out << "world: " << world.c_str() << "\n";
-  }
-  out << "max_range_m: " << table.max_range_m() << "\n";
-  out << "places:\n";
-  for (const PlaceEntry& e : table.entries()) {
-    out << std::fixed;
-    out.precision(4);
-    out << "  - {x: " << e.x_m << ", y: " << e.y_m << ", heading_deg: ";
-    out.precision(3);
-    out << e.heading_rad * 180.0 / std::numbers::pi << ",\n     ranges: [";
-    out.precision(4);
-    for (std::size_t b = 0; b < e.view.ranges_m.size(); ++b) {
-      out << (b > 0 ? (b % 12 == 0 ? ",\n       " : ", ") : "") << e.view.ranges_m[b];
-    }
-    out << "],\n     colours: \"";
-    for (const ColourClass c : e.view.colours) out << ColourClassChar(c);
-    out << "\",\n     kinds: \"";
-    for (const core::ReadingKind kind : e.kinds) out << KindChar(kind);
-    out << "\"}\n";
-  }
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  const fs::path temp =
-      target.parent_path() / (target.filename().string() + ".tmp" + std::to_string(::getpid()));
-  {
-    std::ofstream file(temp, std::ios::binary | std::ios::trunc);
-    file << out.str();
-    file.flush();
-    if (!file) {
-      std::error_code ignored;
-      fs::remove(temp, ignored);
-      throw std::runtime_error("cannot write " + path);
-    }
-  }
-  std::error_code error;
-  fs::rename(temp, target, error);
-  if (error) {
-    fs::remove(temp, error);
-    throw std::runtime_error("cannot write " + path);
-  }
-}
-
-PlaceTable LoadPlaceTable(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw core::InputError(path, 0, "", "cannot read the place table");
-  YAML::Node root;
-  try {
-    root = YAML::Load(in);
-  } catch (const YAML::Exception& e) {
-    throw core::InputError(path, e.mark.line + 1, "", "not YAML: " + e.msg);
-  }
-  const Reader r{path};
-  if (!root.IsMap()) r.Fail(root, "format", "the file must be a YAML map");
-  const YAML::Node format = r.Field(root, "format", "format");
-  if (r.As<std::string>(format, "format", "a string") != kPlaceTableFormat) {
-    r.Fail(format, "format", std::string("must be ") + kPlaceTableFormat);
-  }
-  const auto world = r.As<std::string>(r.Field(root, "world", "world"), "world", "a string");
-  const YAML::Node max_range_node = r.Field(root, "max_range_m", "max_range_m");
-  const double max_range = r.Number(max_range_node, "max_range_m");
-  if (!(max_range > 0.0)) r.Fail(max_range_node, "max_range_m", "must be > 0");
-  const YAML::Node places = r.Field(root, "places", "places");
-  if (!places.IsSequence()) r.Fail(places, "places", "must be a list");
-  std::vector<PlaceEntry> entries;
-  for (std::size_t i = 0; i < places.size(); ++i) {
-    const YAML::Node p = places[i];
-    const std::string at = "places[" + std::to_string(i) + "]";
-    if (!p.IsMap()) r.Fail(p, at, "must be a map");
-    PlaceEntry e;
-    e.x_m = r.Number(r.Field(p, "x", at + ".x"), at + ".x");
-    e.y_m = r.Number(r.Field(p, "y", at + ".y"), at + ".y");
-    e.heading_rad = r.Number(r.Field(p, "heading_deg", at + ".heading_deg"), at + ".heading_deg") *
-                    std::numbers::pi / 180.0;
-    const std::string ranges_field = at + ".ranges";
-    const YAML::Node ranges = r.Field(p, "ranges", ranges_field);
-    if (!ranges.IsSequence() || static_cast<int>(ranges.size()) != kBins) {
-      r.Fail(ranges, ranges_field, "must be a list of " + std::to_string(kBins) + " ranges");
-    }
-    for (const YAML::Node& v : ranges) {
-      const double range = r.Number(v, ranges_field);
-      if (range < 0.0) r.Fail(v, ranges_field, "ranges must be >= 0");
-      e.view.ranges_m.push_back(range);
-    }
-    const std::string colours_field = at + ".colours";
-    const YAML::Node colours = r.Field(p, "colours", colours_field);
-    const auto colour_chars = r.As<std::string>(colours, colours_field, "a string");
-    if (!colour_chars.empty() && static_cast<int>(colour_chars.size()) != kBins) {
-      r.Fail(colours, colours_field, "must be empty or one character a bin");
-    }
-    for (const char c : colour_chars) {
-      const std::optional<ColourClass> colour = ColourClassFromChar(c);
-      if (!colour) r.Fail(colours, colours_field, std::string("'") + c + "' is not a colour class");
-      e.view.colours.push_back(*colour);
-    }
-    const std::string kinds_field = at + ".kinds";
-    const YAML::Node kinds = r.Field(p, "kinds", kinds_field);
-    const auto kind_chars = r.As<std::string>(kinds, kinds_field, "a string");
-    if (!kind_chars.empty() && static_cast<int>(kind_chars.size()) != kBins) {
-      r.Fail(kinds, kinds_field, "must be empty or one character a bin");
-    }
-    for (const char c : kind_chars) {
-      const std::optional<core::ReadingKind> kind = KindFromChar(c);
-      if (!kind) r.Fail(kinds, kinds_field, std::string("'") + c + "' is not h, c or b");
-      e.kinds.push_back(*kind);
-    }
-    entries.push_back(std::move(e));
-  }
-  return {world, max_range, std::move(entries)};
 }
 
 }  // namespace pirouette::localize
