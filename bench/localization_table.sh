@@ -3,24 +3,26 @@
 # odometry noise of 5% translation and 5% rotation, explored with
 # --localize none and --localize scan, and with scan and no noise (what the
 # tracker costs where there is nothing to correct). Prints a Markdown table.
-#   usage: bench/localization_table.sh [BINARY] [SEEDS]   (default: build/release, 5 seeds)
+#   usage: [JOBS=2] bench/localization_table.sh [BINARY] [SEEDS]
+#   (default: build/release, 5 seeds, 2 runs at a time)
 set -euo pipefail
 bin=${1:-build/release/apps/pirouette/pirouette}
 seeds=${2:-5}
+jobs=${JOBS:-2}
 out=$(mktemp -d)
+# One line a run: world seed localize noise; run JOBS at a time.
 for world in worlds/*.yaml; do
   grep -q "^format: pirouette-world" "$world" || continue
-  name=$(basename "$world" .yaml)
   for seed in $(seq 1 "$seeds"); do
     for mode in none:0.05 scan:0.05 scan:0; do
-      loc=${mode%%:*}
-      noise=${mode##*:}
-      "$bin" explore --world "$world" --seed "$seed" --odometry-noise "$noise,$noise" \
-        --localize "$loc" --out "$out/$name-$seed-$loc@$noise" --quiet >/dev/null 2>&1 || true
-      echo "localization_table: $name seed $seed $loc noise $noise done" >&2
+      echo "$world $seed ${mode%%:*} ${mode##*:}"
     done
   done
-done
+done | xargs -P "$jobs" -L 1 bash -c '
+  name=$(basename "$1" .yaml)
+  "$0" explore --world "$1" --seed "$2" --odometry-noise "$4,$4" --localize "$3" \
+    --out "'"$out"'/$name-$2-$3@$4" --quiet >/dev/null 2>&1 || true
+  echo "localization_table: $name seed $2 $3 noise $4 done" >&2' "$bin"
 python3 - "$out" <<'PY'
 import json, os, sys, collections
 out = sys.argv[1]

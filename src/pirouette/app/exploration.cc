@@ -165,6 +165,7 @@ class Explorer {
   // motions since the previous frame go with it to the observer (a log).
   const FrameMapper::Seen& Look() {
     const robot::Frame frame = robot_.Capture();
+    looked_since_drive_ = true;
     ++result_.frames;
     if (observer_.on_capture) observer_.on_capture(frame, motions_since_frame_);
     motions_since_frame_.clear();
@@ -189,10 +190,30 @@ class Explorer {
     result_.rotation_deg += std::abs(radians) * 180.0 / std::numbers::pi;
   }
 
+  // Turns to face a leg, which the caller then looks along. With tracking,
+  // a turn is made in steps no larger than a pirouette's with a look after
+  // each (and one before the first, where the robot has not looked since it
+  // drove), so that the tracker matches every frame against one it overlaps
+  // and a turn's error does not go unseen into the map.
+  void Face(double radians) {
+    if (options_.localize == LocalizeKind::kNone || std::abs(radians) < 1e-9) {
+      Turn(radians);
+      return;
+    }
+    if (!looked_since_drive_) Look();
+    const double most = 2.0 * std::numbers::pi / options_.pirouette_turns;
+    const int steps = static_cast<int>(std::ceil(std::abs(radians) / most - 1e-9));
+    for (int i = 0; i < steps; ++i) {
+      Turn(radians / steps);
+      if (i + 1 < steps) Look();
+    }
+  }
+
   // A straight move as made; false when it stopped at contact (the robot
   // then looks at what it touched, which maps the bumper's hit with it).
   bool Drive(double metres) {
     const robot::MoveOutcome outcome = Execute(robot::Move::Straight(metres));
+    looked_since_drive_ = false;
     ++result_.moves;
     result_.path_length_m += std::abs(outcome.achieved);
     result_.path.push_back(mapper_.ToMap(outcome.odometry));
@@ -230,7 +251,7 @@ class Explorer {
         const Eigen::Vector2d to = target - pose.translation();
         const double distance = to.norm();
         if (distance < 0.25 * cell_m_) break;
-        Turn(core::NormalizeAngle(std::atan2(to.y(), to.x()) - pose.heading()));
+        Face(core::NormalizeAngle(std::atan2(to.y(), to.x()) - pose.heading()));
         const double leg = std::min(distance, look_.LongestCheckedMove());
         const core::ObstacleProfile& profile = Look().profile;
         const LookAhead::Finding finding = look_.Blocking(profile, leg);
@@ -481,6 +502,7 @@ class Explorer {
   core::Pose2 start_pose_;
   std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing
   int step_aways_ = 0;
+  bool looked_since_drive_ = false;  // a frame was taken where the robot stands
   Clock::time_point start_;
 };
 

@@ -1,5 +1,6 @@
 #include "pirouette/app/frame_mapper.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -29,7 +30,11 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
       extractor_(ipm_, setup.max_range_m),
       look_(LookAheadOptions{setup.radius_m, NearRange(ipm_), setup.max_range_m, setup.cell_m}),
       grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {
-  if (setup.tracking) tracker_.emplace(*setup.tracking);
+  if (setup.tracking) {
+    tracker_.emplace(*setup.tracking);
+    view_extractor_.emplace(ipm_,
+                            setup.max_range_m * std::max(1.0, setup.tracking->view_range_factor));
+  }
 }
 
 FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
@@ -51,7 +56,8 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
       before_stop_ = grid_;
       stop_events_.clear();
     }
-    stop_poses_ = tracker_->Track(*before_stop_, seen.profile, frame.odometry);
+    stop_poses_ = tracker_->Track(*before_stop_, view_extractor_->Extract(seen.mask),
+                                  setup_.max_range_m, frame.odometry);
   }
   stop_events_.push_back({seen.profile, std::nullopt});
   seen.pose = stop_poses_.back();

@@ -42,7 +42,9 @@ using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
 // in front of the robot (its bumper); a look that found the way blocked
 // confirms the blocking hits (ConfirmBlocking). With tracking, each frame's
 // pose is first corrected by the tracker (against the stop's earlier frames,
-// and once the stop has 4 frames against the map before the stop) and the
+// with a second profile of the frame read out to the tracker's
+// view_range_factor times max_range_m, and once the stop has 4 frames
+// against the map before the stop) and the
 // stop's frames, which the tracker may move, are put again in the map as it
 // was before the stop: the map's frame is the odometry's at the start, and
 // ToMap turns any later odometry pose into it.
@@ -95,6 +97,8 @@ class FrameMapper {
   MaskFunction mask_;
   camera::InversePerspectiveMap ipm_;
   vision::ProfileExtractor extractor_;  // the profile tables, built once
+  // With tracking: the longer profile the tracker matches the frames with.
+  std::optional<vision::ProfileExtractor> view_extractor_;
   LookAhead look_;
   // Puts a frame (or a confirmation) in grid_ at its map pose.
   void Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot);

@@ -123,23 +123,43 @@ HeadingMatch MatchHeading(const MapProfile& map, const core::ObstacleProfile& pr
 
 namespace {
 
-// A view's reading at `bearing` (robot frame), interpolated between the two
-// columns either side when both are of one kind and not blind.
-std::optional<core::RangeReading> ReadingAt(const core::ObstacleProfile& profile, double bearing) {
-  const std::vector<core::RangeReading>& r = profile.readings;
+// How well `reading` agrees with two readings of one kind.
+double AgreesWith(const core::RangeReading& reading, core::ReadingKind other_kind,
+                  double other_range_m, const HeadingMatcherOptions& options) {
+  const bool hit = reading.kind == core::ReadingKind::kHit;
+  const bool other_hit = other_kind != core::ReadingKind::kClear;  // blind: nearer than seen
+  if (hit && other_hit) {
+    const double s =
+        std::max(options.view_sigma_floor_m, options.view_sigma_fraction * reading.range_m);
+    const double d = reading.range_m - other_range_m;
+    return std::exp(-d * d / (2.0 * s * s));
+  }
+  return !hit && !other_hit ? 1.0 : 0.0;
+}
+
+// How well `reading` agrees with a view at `bearing` (the view's robot
+// frame): against the view's readings interpolated between the two columns
+// either side when they are of one kind; at an edge (the columns differ in
+// kind) the better of the two, since the edge could lie anywhere between
+// them. A blind column counts as a hit at its range (something nearer than
+// the camera sees). None outside the view.
+std::optional<double> AgreementAt(const core::RangeReading& reading,
+                                  const core::ObstacleProfile& view, double bearing,
+                                  const HeadingMatcherOptions& options) {
+  const std::vector<core::RangeReading>& r = view.readings;
   // Columns run left to right: bearings decrease.
   for (std::size_t i = 0; i + 1 < r.size(); ++i) {
     const double hi = r[i].bearing_rad;
     const double lo = r[i + 1].bearing_rad;
     if (bearing > hi || bearing < lo) continue;
-    if (r[i].kind != r[i + 1].kind || r[i].kind == core::ReadingKind::kBlind || hi - lo <= 0.0) {
-      return std::nullopt;
+    const bool hit_i = r[i].kind != core::ReadingKind::kClear;
+    const bool hit_j = r[i + 1].kind != core::ReadingKind::kClear;
+    if (hit_i != hit_j || hi - lo <= 0.0) {
+      return std::max(AgreesWith(reading, r[i].kind, r[i].range_m, options),
+                      AgreesWith(reading, r[i + 1].kind, r[i + 1].range_m, options));
     }
     const double t = (hi - bearing) / (hi - lo);
-    core::RangeReading out = r[i];
-    out.bearing_rad = bearing;
-    out.range_m = (1.0 - t) * r[i].range_m + t * r[i + 1].range_m;
-    return out;
+    return AgreesWith(reading, r[i].kind, (1.0 - t) * r[i].range_m + t * r[i + 1].range_m, options);
   }
   return std::nullopt;
 }
@@ -177,21 +197,14 @@ HeadingMatch MatchToViews(const std::vector<HeadedView>& views,
     double sum = 0.0;
     int count = 0;
     for (const auto& [reading, view] : kept) {
-      const std::optional<core::RangeReading> other =
-          ReadingAt(*view->profile, core::NormalizeAngle(predicted_heading + offset +
-                                                         reading->bearing_rad - view->heading_rad));
-      if (!other) continue;
+      const std::optional<double> agreement =
+          AgreementAt(*reading, *view->profile,
+                      core::NormalizeAngle(predicted_heading + offset + reading->bearing_rad -
+                                           view->heading_rad),
+                      options);
+      if (!agreement) continue;
       ++count;
-      const bool hit = reading->kind == core::ReadingKind::kHit;
-      const bool other_hit = other->kind == core::ReadingKind::kHit;
-      if (hit && other_hit) {
-        const double s =
-            std::max(options.view_sigma_floor_m, options.view_sigma_fraction * reading->range_m);
-        const double d = reading->range_m - other->range_m;
-        sum += std::exp(-d * d / (2.0 * s * s));
-      } else if (!hit && !other_hit) {
-        sum += 1.0;
-      }
+      sum += *agreement;
     }
     if (compared != nullptr) *compared = count;
     return sum;

@@ -89,9 +89,11 @@ struct HeadedView {
 // agreement minus the prior, as MatchHeading, but without the map's cells
 // in between (a centimetre cell hides the millimetres that tell a degree
 // on a wall seen nearly face on). Only readings that fall inside some view
-// at both ends of the window take part; one whose view's neighbouring
-// columns differ in kind there (an edge) counts as disagreeing. score is
-// the mean agreement of those compared at the answer.
+// at both ends of the window take part. Where the view's neighbouring
+// columns differ in kind (an edge, which could lie anywhere between them) a
+// reading takes the better agreement of the two; a blind column counts as
+// a hit at its range. score is the mean agreement of those compared at the
+// answer.
 HeadingMatch MatchToViews(const std::vector<HeadedView>& views,
                           const core::ObstacleProfile& profile, double predicted_heading,
                           double sigma_rad, const HeadingMatcherOptions& options = {});

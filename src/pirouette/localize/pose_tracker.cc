@@ -11,9 +11,22 @@ bool PoseTracker::StartsStop(const core::Pose2& odom_T_robot) const {
                               options_.same_stop_m;
 }
 
+namespace {
+
+// The readings out to max_range_m: those beyond it read clear there.
+core::RangeReading Within(core::RangeReading r, double max_range_m) {
+  if (r.kind != core::ReadingKind::kBlind && r.range_m > max_range_m) {
+    r.kind = core::ReadingKind::kClear;
+    r.range_m = max_range_m;
+  }
+  return r;
+}
+
+}  // namespace
+
 std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before,
                                             const core::ObstacleProfile& profile,
-                                            const core::Pose2& odom_T_robot) {
+                                            double map_range_m, const core::Pose2& odom_T_robot) {
   ++matches_;
   const core::Pose2 predicted = ToMap(odom_T_robot);
   const bool starts = StartsStop(odom_T_robot);
@@ -47,15 +60,16 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
   // stop's position.
   if (stop_.size() >= options_.min_frames_for_map_turn) {
     core::ObstacleProfile all;
-    all.max_range_m = profile.max_range_m;
+    all.max_range_m = map_range_m;
     const double reference = stop_.front().heading_rad;
     for (const StopFrame& f : stop_) {
-      for (core::RangeReading r : f.profile.readings) {
+      for (const core::RangeReading& reading : f.profile.readings) {
+        core::RangeReading r = Within(reading, map_range_m);
         r.bearing_rad += f.heading_rad - reference;
         all.readings.push_back(r);
       }
     }
-    const MapProfile map(before, stop_position_, profile.max_range_m);
+    const MapProfile map(before, stop_position_, map_range_m);
     const HeadingMatch turn = MatchHeading(
         map, all, reference, options_.map_turn_steps * options_.heading.step_rad, options_.heading);
     for (StopFrame& f : stop_) f.heading_rad += turn.offset_rad;

@@ -24,6 +24,14 @@ struct TrackerOptions {
   // steps of where the last one left it.
   std::size_t min_frames_for_map_turn = 4;
   double map_turn_steps = 2.0;
+  // The stop's frames are matched with each other out to this many times
+  // the map's range (FrameMapper reads a second, longer profile of each
+  // frame for it): with the map's range (0.41 m for the paper's robot) most
+  // views of open floor read clear all round and tell no heading, while the
+  // walls beyond tell it well. Two frames from one place see a far wall at
+  // the same image rows, so the long range's coarse resolution does not
+  // bias their match.
+  double view_range_factor = 3.0;
   HeadingMatcherOptions heading;
 };
 
@@ -34,12 +42,15 @@ struct TrackerOptions {
 // of a stop, so they share its position and differ in heading alone: each
 // new frame's heading relative to the stop's earlier frames comes from its
 // readings against theirs along the same bearings (MatchToViews), around
-// what the odometry says it turned. Once the stop has 4 frames, they take a
-// small common turn against the map before the stop (MatchHeading, the beam
-// model). Straight moves are not corrected: matching a stop's position
-// against the map was tried (likelihood field, beam model) and made the
-// maps worse; see the README. The map's frame is the odometry's at the
-// start.
+// what the odometry says it turned, read out to view_range_factor times the
+// map's range (the far walls tell the turn where the near floor is empty).
+// The explorer makes every turn in steps of a pirouette's with a look after
+// each, so that each frame overlaps one before it. Once the stop has 4
+// frames, they take a small common turn against the map before the stop
+// (MatchHeading, the beam model, over the map's range). Straight moves are
+// not corrected: matching a stop's position against the map was tried
+// (likelihood field, beam model) and made the maps worse; see the README.
+// The map's frame is the odometry's at the start.
 class PoseTracker {
  public:
   explicit PoseTracker(const TrackerOptions& options = {}) : options_(options) {}
@@ -51,12 +62,14 @@ class PoseTracker {
   // Whether a frame at odom_T_robot starts a new stop (the robot moved).
   bool StartsStop(const core::Pose2& odom_T_robot) const;
 
-  // Tracks a frame taken at odom_T_robot that showed `profile`. `before` is
+  // Tracks a frame taken at odom_T_robot that showed `profile` (read out to
+  // view_range_factor times map_range_m: the frames are matched with each
+  // other over all of it, and with the map over map_range_m). `before` is
   // the map as it was before the stop's first frame (the caller keeps it
   // when StartsStop). Returns the map poses of all the stop's frames so far,
   // in order (they may all move): the caller puts them in `before` again.
   std::vector<core::Pose2> Track(const mapping::OccupancyGrid& before,
-                                 const core::ObstacleProfile& profile,
+                                 const core::ObstacleProfile& profile, double map_range_m,
                                  const core::Pose2& odom_T_robot);
 
   int matches() const { return matches_; }    // frames tracked

@@ -23,12 +23,23 @@ mapping::OccupancyGrid EmptyGrid() {
       mapping::OccupancyOptions{.hit_probability = 0.8, .miss_probability = 0.18});
 }
 
-// Explores like FrameMapper: each frame tracked, then the stop's frames put
-// in the map before the stop at the poses the tracker gives. `odometry`
-// maps the true poses to what the wheels say. Returns the largest heading
-// error (degrees) and position error (metres) over the frames.
+// The profile as read out to max_range_m only.
+core::ObstacleProfile ReadTo(core::ObstacleProfile profile, double max_range_m) {
+  for (core::RangeReading& r : profile.readings) {
+    if (r.range_m > max_range_m) r = {r.bearing_rad, max_range_m, core::ReadingKind::kClear};
+  }
+  profile.max_range_m = max_range_m;
+  return profile;
+}
+
+// Explores like FrameMapper: each frame tracked (its profile read out to
+// view_range_m, the map's to map_range_m), then the stop's frames put in the
+// map before the stop at the poses the tracker gives. `odometry` maps the
+// true poses to what the wheels say. Returns the largest heading error
+// (degrees) and position error (metres) over the frames.
 std::pair<double, double> Track(const std::vector<core::Pose2>& truth,
-                                const std::vector<core::Pose2>& odometry) {
+                                const std::vector<core::Pose2>& odometry, double view_range_m = 1.2,
+                                double map_range_m = 1.2) {
   PoseTracker tracker;
   mapping::OccupancyGrid grid = EmptyGrid();
   mapping::OccupancyGrid before = grid;
@@ -36,12 +47,13 @@ std::pair<double, double> Track(const std::vector<core::Pose2>& truth,
   double worst_deg = 0.0;
   double worst_m = 0.0;
   for (std::size_t i = 0; i < truth.size(); ++i) {
-    const core::ObstacleProfile profile = Frame(truth[i]);
+    const core::ObstacleProfile profile = ReadTo(Frame(truth[i]), map_range_m);
     if (tracker.StartsStop(odometry[i])) {
       before = grid;
       stop.clear();
     }
-    const std::vector<core::Pose2> poses = tracker.Track(before, profile, odometry[i]);
+    const std::vector<core::Pose2> poses =
+        tracker.Track(before, ReadTo(Frame(truth[i]), view_range_m), map_range_m, odometry[i]);
     stop.push_back(profile);
     grid = before;
     for (std::size_t k = 0; k < stop.size(); ++k) mapping::InsertProfile(grid, stop[k], poses[k]);
@@ -67,6 +79,34 @@ TEST(PoseTrackerTest, ExactOdometryStaysExact) {
   const auto [deg, m] = Track(truth, truth);
   EXPECT_LT(deg, 0.3);
   EXPECT_LT(m, 0.006);
+}
+
+// Every 30° turn of a pirouette at `at` reads `gain` times what it was.
+std::pair<std::vector<core::Pose2>, std::vector<core::Pose2>> Pirouette(const Eigen::Vector2d& at,
+                                                                        double gain) {
+  std::vector<core::Pose2> truth;
+  std::vector<core::Pose2> odometry;
+  for (int k = 0; k < 12; ++k) {
+    truth.emplace_back(at.x(), at.y(), 0.1 + k * kPi / 6.0);
+    odometry.emplace_back(at.x(), at.y(), 0.1 + gain * k * kPi / 6.0);
+  }
+  return {truth, odometry};
+}
+
+// In the middle of the room no wall is within 0.4 m: read out to the map's
+// 0.4 m, every view is clear floor and tells no turn; read out to 1.2 m,
+// the walls beyond tell each turn (most of it: each match keeps a little of
+// the odometry through its prior).
+TEST(PoseTrackerTest, FarWallsTellTheTurnsWhereTheMapsRangeSeesOnlyFloor) {
+  const auto [truth, odometry] = Pirouette(Eigen::Vector2d(0.6, 0.7), 1.04);
+  const double odometry_deg =
+      std::abs(core::NormalizeAngle(odometry.back().heading() - truth.back().heading())) * 180.0 /
+      kPi;
+  ASSERT_GT(odometry_deg, 12.0);
+  const double near_deg = Track(truth, odometry, 0.4, 0.4).first;
+  const double far_deg = Track(truth, odometry, 1.2, 0.4).first;
+  EXPECT_GT(near_deg, 0.9 * odometry_deg);
+  EXPECT_LT(far_deg, 0.25 * odometry_deg);
 }
 
 // What the tracker can do in a plain room: most of a turn error that grows
