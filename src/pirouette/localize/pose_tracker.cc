@@ -13,13 +13,16 @@ bool PoseTracker::StartsStop(const core::Pose2& odom_T_robot) const {
 
 namespace {
 
-// The readings out to max_range_m: those beyond it read clear there.
-core::RangeReading Within(core::RangeReading r, double max_range_m) {
-  if (r.kind != core::ReadingKind::kBlind && r.range_m > max_range_m) {
-    r.kind = core::ReadingKind::kClear;
-    r.range_m = max_range_m;
+// The profile out to max_range_m: readings beyond it read clear there.
+core::ObstacleProfile Within(core::ObstacleProfile profile, double max_range_m) {
+  for (core::RangeReading& r : profile.readings) {
+    if (r.kind != core::ReadingKind::kBlind && r.range_m > max_range_m) {
+      r.kind = core::ReadingKind::kClear;
+      r.range_m = max_range_m;
+    }
   }
-  return r;
+  profile.max_range_m = max_range_m;
+  return profile;
 }
 
 }  // namespace
@@ -38,7 +41,7 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
     stop_.clear();
     stop_position_ = predicted.translation();
   }
-  StopFrame frame{profile, odom_T_robot, predicted.heading()};
+  StopFrame frame{profile, Within(profile, map_range_m), odom_T_robot, predicted.heading()};
 
   // The new frame's heading relative to the stop's earlier frames (odometry
   // says how far it turned, within rotation_fraction): its readings against
@@ -63,8 +66,7 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
     all.max_range_m = map_range_m;
     const double reference = stop_.front().heading_rad;
     for (const StopFrame& f : stop_) {
-      for (const core::RangeReading& reading : f.profile.readings) {
-        core::RangeReading r = Within(reading, map_range_m);
+      for (core::RangeReading r : f.map_profile.readings) {
         r.bearing_rad += f.heading_rad - reference;
         all.readings.push_back(r);
       }

@@ -77,7 +77,8 @@ class PoseTracker {
 
  private:
   struct StopFrame {
-    core::ObstacleProfile profile;
+    core::ObstacleProfile profile;      // out to the view range
+    core::ObstacleProfile map_profile;  // the same out to the map's range
     core::Pose2 odom;
     double heading_rad = 0.0;  // in the map
   };
