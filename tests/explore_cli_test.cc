@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "pirouette/app/colour_map_file.h"
+#include "pirouette/app/map_file.h"
 #include "run_pirouette.h"
 
 namespace pirouette::testing {
@@ -20,8 +22,8 @@ std::string World(const std::string& name) {
 }
 
 fs::path TempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("pirouette_explore_cli_" + std::to_string(::getpid()) + "_" + name);
+  fs::path dir = fs::temp_directory_path() /
+                 ("pirouette_explore_cli_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(dir);
   return dir;
 }
@@ -37,7 +39,8 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
                                      out.string() + " --max-steps 4 --video --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.output();
   EXPECT_TRUE(run.stdout_only.empty()) << run.stdout_only;
-  for (const char* name : {"map.yaml", "map.pgm", "map.png", "run.json", "explore.mp4"}) {
+  for (const char* name :
+       {"map.yaml", "map.pgm", "map.png", "map_colours.png", "run.json", "explore.mp4"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   EXPECT_FALSE(fs::exists(out / "explore.mp4.partial.mp4"));
@@ -55,6 +58,17 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
     EXPECT_TRUE(json["eval"].contains(field)) << field;
   }
   EXPECT_EQ(Slurp(out / "map.pgm").substr(0, 2), "P5");
+  // The colour layer lies on the map's cells, and the walls and blocks seen
+  // have colours there.
+  const mapping::TrinaryMap map = app::ReadRosMap((out / "map.yaml").string());
+  const localize::ColourMap colours =
+      app::ReadColourMap((out / "map_colours.png").string(), map.geometry);
+  int coloured_walls = 0;
+  for (std::size_t i = 0; i < map.cells.size(); ++i) {
+    coloured_walls += map.cells[i] == mapping::CellState::kOccupied &&
+                      colours.cells()[i] != localize::ColourClass::kNone;
+  }
+  EXPECT_GT(coloured_walls, 10);
   // The map it wrote evaluates to what run.json says.
   const RunResult eval = RunPirouette("eval --world " + World("soccer_field") + " --map " +
                                       (out / "map.yaml").string());

@@ -85,9 +85,12 @@ TEST_F(LocateCliTest, FindsTheRobotOrSaysItCannotAndReusesTheTable) {
     ++run;
   }
   EXPECT_TRUE(fs::exists(table));
-  // The map has no colours and the camera sees 0.4 m, so the field's
-  // symmetry leaves some poses ambiguous: "cannot tell" is a right answer
-  // there, but at least one of these is found.
+  // explore wrote the map's colour layer, and locate used it.
+  const nlohmann::json report = nlohmann::json::parse(Slurp(dir_ / "report0.json"));
+  EXPECT_EQ(report["colours"], (dir_ / "soccer" / "map_colours.png").string());
+  // A pose near a corner can look like another corner (the walls are all
+  // grey): "cannot tell" is a right answer there, but at least one of these
+  // is found.
   EXPECT_GE(found, 1);
 }
 
@@ -99,6 +102,17 @@ TEST_F(LocateCliTest, TheSameRunGivesTheSameAnswer) {
   const RunResult b = RunPirouette(command);
   ASSERT_EQ(a.exit_code, 0) << a.output();
   EXPECT_EQ(a.stdout_only, b.stdout_only);
+}
+
+TEST_F(LocateCliTest, NoColoursComparesRangesOnly) {
+  const fs::path out = dir_ / "plain.json";
+  const RunResult r = RunPirouette("locate --map " + Map() + " --world " + World("soccer_field") +
+                                   " --pose 0.75,0.65,30 --quiet --no-colours --table " +
+                                   (dir_ / "plain.yaml").string() + " --out " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output();
+  const nlohmann::json report = nlohmann::json::parse(Slurp(out));
+  EXPECT_TRUE(report["colours"].is_null());
+  ExpectFoundOrCannotTell(report);
 }
 
 TEST_F(LocateCliTest, DefaultTableGoesBesideTheMap) {
@@ -128,6 +142,18 @@ TEST_F(LocateCliTest, BadInputIsRefusedWithExitTwo) {
 
   const RunResult bad_pose = RunPirouette("locate --map " + Map() + world + " --pose 1,2");
   EXPECT_EQ(bad_pose.exit_code, 2) << bad_pose.output();
+
+  const RunResult no_colours =
+      RunPirouette("locate --map " + Map() + world + " --pose 0.75,0.65,0 --colours " +
+                   (dir_ / "none.png").string());
+  EXPECT_EQ(no_colours.exit_code, 2) << no_colours.output();
+  EXPECT_NE(no_colours.stderr_only.find("none.png"), std::string::npos) << no_colours.stderr_only;
+
+  const RunResult short_range =
+      RunPirouette("locate --map " + Map() + world + " --pose 0.75,0.65,0 --range-factor 0.5");
+  EXPECT_EQ(short_range.exit_code, 2) << short_range.output();
+  EXPECT_NE(short_range.stderr_only.find("--range-factor"), std::string::npos)
+      << short_range.stderr_only;
 }
 
 TEST_F(LocateCliTest, HelpTeachesWithAnExample) {

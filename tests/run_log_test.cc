@@ -63,6 +63,8 @@ TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
   EXPECT_EQ(ReadAll(dir_ / "map" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
   EXPECT_EQ(ReadAll(dir_ / "map" / "map.yaml"), ReadAll(dir_ / "explore" / "map.yaml"));
   EXPECT_EQ(mapped.run["eval"], explored.run["eval"]);
+  EXPECT_EQ(ReadAll(dir_ / "map" / "map_colours.png"),
+            ReadAll(dir_ / "explore" / "map_colours.png"));
   EXPECT_TRUE(fs::exists(dir_ / "map" / "map.png"));
   EXPECT_TRUE(fs::exists(dir_ / "map" / "run.json"));
 }
@@ -94,6 +96,8 @@ TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
   RunMapLog(map);
   EXPECT_EQ(ReadAll(dir_ / "map" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
   EXPECT_EQ(ReadAll(dir_ / "map" / "map.yaml"), ReadAll(dir_ / "explore" / "map.yaml"));
+  EXPECT_EQ(ReadAll(dir_ / "map" / "map_colours.png"),
+            ReadAll(dir_ / "explore" / "map_colours.png"));
 
   // Mapped again without tracking, the same frames make another map.
   map.out_dir = (dir_ / "untracked").string();

@@ -22,7 +22,10 @@ Command AddLocateCommand(CLI::App& parent) {
       "it makes one pirouette, and its Radial Obstacle Profile is looked up in the map's place "
       "table (Taylor, Geva & Boles 2005, §5.3: a table of places made from the saved map by ray "
       "casting, written beside the map and reused while the map is the same) and each candidate "
-      "verified against the map. Prints 'found X Y H (agreement A)' or 'cannot tell: REASON' "
+      "verified against the map; where the map has a colour layer (map_colours.png, which explore "
+      "writes beside map.yaml) the colours of what the pirouette saw must agree with it too, "
+      "which tells a symmetric room from its mirror image (§5.1's colour ROP). Prints 'found X Y H "
+      "(agreement A)' or 'cannot tell: REASON' "
       "(exit 0 for both). With --random N instead of --pose, N random poses where the robot fits "
       "and the rates: found right (within one coarse cell, heading within 10 degrees), cannot "
       "tell, wrong.\n  example: pirouette explore --world worlds/soccer_field.yaml --out soccer "
@@ -41,9 +44,19 @@ Command AddLocateCommand(CLI::App& parent) {
   cmd->add_option("--table", request->table_path,
                   "the map's place table (pirouette-places/1 YAML; default: places.yaml beside "
                   "the map): loaded if made for this map, else built and written");
+  CLI::Option* colours_option =
+      cmd->add_option("--colours", request->colours_path,
+                      "the map's colour layer (default: map_colours.png beside the map, if there)");
+  cmd->add_flag_callback(
+         "--no-colours", [request] { request->use_colours = false; },
+         "ignore the map's colour layer (ranges only)")
+      ->excludes(colours_option);
   cmd->add_option("--seed", request->seed, "seeds the noise and the random poses")
       ->capture_default_str();
   cmd->add_option("--method", *method, "floor segmentation: paper | default | truth")
+      ->capture_default_str();
+  cmd->add_option("--range-factor", request->range_factor,
+                  "read the pirouette and the map out to this many times the map's range")
       ->capture_default_str();
   cmd->add_option("--out", *out, "write the JSON report here (atomically)");
   cmd->add_flag("--quiet", request->quiet, "no progress line");
@@ -62,9 +75,10 @@ Command AddLocateCommand(CLI::App& parent) {
                            "replaced it\n",
                            result.table_path.c_str());
             }
-            std::fprintf(stderr, "table %s: %d places (spacing %.3f m)%s\n",
+            std::fprintf(stderr, "table %s: %d places (spacing %.3f m)%s; colours: %s\n",
                          result.table_path.c_str(), result.table_places, result.spacing_m,
-                         result.table_loaded ? ", loaded" : ", built");
+                         result.table_loaded ? ", loaded" : ", built",
+                         result.colours_path.empty() ? "none" : result.colours_path.c_str());
             if (request->pose) {
               const app::LocateAnswer& a = result.trials.front().answer;
               if (a.found) {

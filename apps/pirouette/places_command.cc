@@ -40,6 +40,9 @@ Command AddPlacesCommand(CLI::App& parent) {
       "the table grid's spacing, metres (default: the coarse cell, at least 4 robot radii)");
   cmd->add_option("--method", *method, "floor segmentation: paper | default | truth")
       ->capture_default_str();
+  cmd->add_option("--range-factor", request->range_factor,
+                  "read the pirouettes out to this many times the map's range")
+      ->capture_default_str();
   cmd->add_option("--out", *out, "write the JSON report here (atomically)");
   auto no_refine = std::make_shared<bool>(false);
   cmd->add_flag("--no-refine", *no_refine,

@@ -84,6 +84,7 @@ class Explorer {
       result_.corrections = mapper_.tracker()->accepted();
       result_.matches = mapper_.tracker()->matches();
     }
+    result_.colour_sightings = mapper_.ColourSightings();
     result_.grid = mapper_.TakeGrid();
     return std::move(result_);
   }

@@ -12,6 +12,7 @@
 #include "pirouette/app/frame_mapper.h"
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/localize/colour_map.h"
 #include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/mapping/trinary_map.h"
@@ -107,6 +108,9 @@ struct ExplorationResult {
   std::string reason;  // why, when stuck
   // The map, in the odometry frame (placeholder 1 × 1 until the run starts).
   mapping::OccupancyGrid grid{core::GridGeometry(0.01, Eigen::Vector2d::Zero(), 1, 1)};
+  // The map's colour layer: what the frames saw standing on the floor
+  // (FrameMapper::ColourSightings).
+  std::vector<localize::ColourSighting> colour_sightings;
   std::vector<core::Pose2> path;   // odometry poses after every move, from the start
   std::vector<core::Pose2> stops;  // where the robot pirouetted
   int moves = 0;                   // straight moves

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "pirouette/app/atomic_file.h"
+#include "pirouette/app/colour_map_file.h"
 #include "pirouette/app/exploration_video.h"
 #include "pirouette/app/image_io.h"
 #include "pirouette/app/map_evaluation.h"
@@ -94,6 +95,8 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
   const mapping::OccupancyGrid seen = result.grid.CroppedToKnown(kMapMarginCells);
   mapping::TrinaryMap map = seen.ToTrinary();
   WriteRosMap(map, (out / "map.yaml").string());
+  WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
+                 ColourMapPathFor((out / "map.yaml").string()));
   WritePng((out / "map.png").string(), DrawMapPicture(seen, result.path, result.stops));
   return map;
 }

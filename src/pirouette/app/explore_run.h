@@ -42,15 +42,17 @@ struct ExploreReport {
 };
 
 // Explores the world of the request and writes, atomically, OUT/map.yaml,
-// OUT/map.pgm, OUT/map.png, OUT/run.json (SPEC.md) and with `video`
+// OUT/map.pgm, OUT/map.png, OUT/map_colours.png, OUT/run.json (SPEC.md) and with `video`
 // OUT/explore.mp4, and with `record_dir` a run log; the outputs are written whatever the status, so
 // an interrupted or stuck run keeps its map. Progress goes to standard error unless `quiet`. Throws
 // core::InputError for a bad world or option.
 ExploreReport RunExplore(const ExploreRequest& request);
 
 // Writes OUT/map.yaml, OUT/map.pgm (the part of the result's grid the robot
-// saw, with a margin) and OUT/map.png (with its path and stops), atomically;
-// returns the map written.
+// saw, with a margin), OUT/map.png (with its path and stops) and
+// OUT/map_colours.png (its colour layer: localize::ColourMap::FromSightings of
+// the result's colour sightings, app::WriteColourMap), atomically; returns
+// the map written.
 mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result);
 
 // run.json (SPEC.md's `pirouette-run/1`) for a result; `eval` is the map's

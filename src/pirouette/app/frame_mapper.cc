@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "pirouette/app/column_colour.h"
 #include "pirouette/app/image_io.h"
 #include "pirouette/app/stage_timer.h"
 #include "pirouette/mapping/range_sensor_model.h"
@@ -21,6 +22,21 @@ mapping::OccupancyGrid InitialGrid(const core::Pose2& start, double cell_m,
       core::GridGeometry::Covering(cell_m, lo, Eigen::Vector2d(2 * kHalf, 2 * kHalf)), occupancy);
 }
 
+// The colours of a frame's hits, in the robot's frame.
+std::vector<localize::ColourSighting> ColouredHits(const cv::Mat3b& bgr, const cv::Mat1b& mask,
+                                                   const core::ObstacleProfile& profile) {
+  std::vector<localize::ColourSighting> hits;
+  for (std::size_t u = 0; u < profile.readings.size(); ++u) {
+    const core::RangeReading& r = profile.readings[u];
+    if (r.kind != core::ReadingKind::kHit) continue;
+    const localize::ColourClass c = ColumnColour(bgr, mask, static_cast<int>(u));
+    if (c == localize::ColourClass::kNone) continue;
+    hits.push_back(
+        {r.range_m * Eigen::Vector2d(std::cos(r.bearing_rad), std::sin(r.bearing_rad)), c});
+  }
+  return hits;
+}
+
 }  // namespace
 
 FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core::Pose2& start)
@@ -32,8 +48,7 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
       grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {
   if (setup.tracking) {
     tracker_.emplace(*setup.tracking);
-    view_extractor_.emplace(ipm_,
-                            setup.max_range_m * std::max(1.0, setup.tracking->view_range_factor));
+    view_extractor_.emplace(ipm_, setup.max_range_m * setup.tracking->view_range_factor);
   }
 }
 
@@ -44,6 +59,7 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
     seen.bgr = ToBgrMat(frame.image);
     seen.mask = mask_(seen.bgr);
     seen.profile = extractor_.Extract(seen.mask);
+    colour_frames_.push_back({frame.odometry, ColouredHits(seen.bgr, seen.mask, seen.profile)});
   }
   if (!tracker_) {
     seen.pose = frame.odometry;
@@ -61,6 +77,9 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
   }
   stop_events_.push_back({seen.profile, std::nullopt});
   seen.pose = stop_poses_.back();
+  for (std::size_t i = 0; i < stop_poses_.size(); ++i) {
+    colour_frames_[colour_frames_.size() - stop_poses_.size() + i].pose = stop_poses_[i];
+  }
   // The stop's frames again, where the tracker now puts them.
   grid_ = *before_stop_;
   for (std::size_t i = 0; i < stop_events_.size(); ++i) {
@@ -70,6 +89,16 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
     }
   }
   return seen;
+}
+
+std::vector<localize::ColourSighting> FrameMapper::ColourSightings() const {
+  std::vector<localize::ColourSighting> out;
+  for (const ColourFrame& f : colour_frames_) {
+    for (const localize::ColourSighting& h : f.hits_robot) {
+      out.push_back({f.pose * h.p_m, h.colour});
+    }
+  }
+  return out;
 }
 
 void FrameMapper::Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot) {

@@ -11,6 +11,7 @@
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/core/obstacle_profile.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/localize/colour_map.h"
 #include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/robot/robot.h"
@@ -80,6 +81,11 @@ class FrameMapper {
   void ConfirmBlocking(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
                        double leg_m);
 
+  // Where the frames saw the bases of obstacles and their colours
+  // (app::ColumnColour of each hit's column), at the frames' map poses (with
+  // tracking, where the tracker last put them): the map's colour layer.
+  std::vector<localize::ColourSighting> ColourSightings() const;
+
   const mapping::OccupancyGrid& grid() const { return grid_; }
   mapping::OccupancyGrid TakeGrid() { return std::move(grid_); }
   const MapperSetup& setup() const { return setup_; }
@@ -112,6 +118,12 @@ class FrameMapper {
     core::ObstacleProfile profile;
     std::optional<double> blocked_leg_m;  // a ConfirmBlocking of the frame before
   };
+  // Every frame's coloured hits in the robot's frame, and its map pose.
+  struct ColourFrame {
+    core::Pose2 pose;
+    std::vector<localize::ColourSighting> hits_robot;
+  };
+  std::vector<ColourFrame> colour_frames_;
   std::optional<mapping::OccupancyGrid> before_stop_;
   std::vector<StopEvent> stop_events_;
   std::vector<core::Pose2> stop_poses_;

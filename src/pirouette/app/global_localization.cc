@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 
+#include "pirouette/app/colour_map_file.h"
 #include "pirouette/app/exploration.h"
 #include "pirouette/app/map_file.h"
 #include "pirouette/app/place_recognition.h"
@@ -37,6 +38,7 @@ MapView EntryMapView(const localize::PlaceEntry& e) {
   MapView v;
   v.ranges_m = e.view.ranges_m;
   v.kinds.resize(v.ranges_m.size(), MapRayKind::kHit);
+  v.colours = e.view.colours;
   for (std::size_t b = 0; b < e.kinds.size() && b < v.kinds.size(); ++b) {
     v.kinds[b] = e.kinds[b] == core::ReadingKind::kHit     ? MapRayKind::kHit
                  : e.kinds[b] == core::ReadingKind::kClear ? MapRayKind::kClear
@@ -61,6 +63,11 @@ MapAgreement AgreementAtShift(const localize::PlaceView& query,
     const double sigma = std::max(sigma_floor_m, kAgreementSigmaFraction * rq);
     const double d = rm - rq;
     const core::ReadingKind qk = kinds[static_cast<std::size_t>(b)];
+    const bool colour_mismatch =
+        !query.colours.empty() && !map_view.colours.empty() &&
+        query.colours[static_cast<std::size_t>(b)] != localize::ColourClass::kNone &&
+        map_view.colours[static_cast<std::size_t>(m)] != localize::ColourClass::kNone &&
+        query.colours[static_cast<std::size_t>(b)] != map_view.colours[static_cast<std::size_t>(m)];
     // Floor seen clear where the map is clear says little (most bearings of
     // an open floor): such bins weigh kClearWeight.
     const double w =
@@ -73,6 +80,7 @@ MapAgreement AgreementAtShift(const localize::PlaceView& query,
     } else {
       a = std::exp(-0.5 * d * d / (sigma * sigma));
     }
+    if (colour_mismatch) a *= kColourMismatchFactor;
     sum += w * a;
     weight += w;
     ++compared;
@@ -125,12 +133,13 @@ std::uint64_t Fnv(std::uint64_t h, const void* data, std::size_t n) {
 }  // namespace
 
 MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origin_m,
-                    double max_range_m) {
+                    double max_range_m, const localize::ColourMap& colours) {
   const core::GridGeometry& g = map.geometry;
   const double step = 0.25 * g.resolution();
   MapView v;
   v.ranges_m.assign(kBins, max_range_m);
   v.kinds.assign(kBins, MapRayKind::kClear);
+  if (!colours.empty()) v.colours.assign(kBins, localize::ColourClass::kNone);
   for (int b = 0; b < kBins; ++b) {
     const double a = (b + 0.5) * kBinRad;
     const Eigen::Vector2d dir(std::cos(a), std::sin(a));
@@ -141,6 +150,9 @@ MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origi
       v.ranges_m[static_cast<std::size_t>(b)] = t;
       v.kinds[static_cast<std::size_t>(b)] =
           s == mapping::CellState::kOccupied ? MapRayKind::kHit : MapRayKind::kUnknown;
+      if (s == mapping::CellState::kOccupied && !colours.empty()) {
+        v.colours[static_cast<std::size_t>(b)] = colours.At(c);
+      }
       break;
     }
   }
@@ -161,8 +173,8 @@ bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, d
   return true;
 }
 
-std::string MapTableName(const mapping::TrinaryMap& map, double robot_radius_m, double spacing_m,
-                         double max_range_m) {
+std::string MapTableName(const mapping::TrinaryMap& map, const localize::ColourMap& colours,
+                         double robot_radius_m, double spacing_m, double max_range_m) {
   std::uint64_t h = 1469598103934665603ULL;
   const double geo[3] = {map.geometry.resolution(), map.geometry.origin().x(),
                          map.geometry.origin().y()};
@@ -170,11 +182,16 @@ std::string MapTableName(const mapping::TrinaryMap& map, double robot_radius_m, 
   h = Fnv(h, geo, sizeof(geo));
   h = Fnv(h, size, sizeof(size));
   h = Fnv(h, map.cells.data(), map.cells.size() * sizeof(mapping::CellState));
+  // A map without a colour layer keeps the name it had before there were any.
+  if (!colours.empty()) {
+    h = Fnv(h, colours.cells().data(), colours.cells().size() * sizeof(localize::ColourClass));
+  }
   return fmt::format("map {:016x} radius {:.4f} spacing {:.4f} range {:.4f}", h, robot_radius_m,
                      spacing_m, max_range_m);
 }
 
-localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double robot_radius_m,
+localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map,
+                                        const localize::ColourMap& colours, double robot_radius_m,
                                         double spacing_m, double max_range_m) {
   const core::GridGeometry& g = map.geometry;
   const Eigen::Vector2d lo = g.origin();
@@ -184,8 +201,8 @@ localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double r
   for (double y = lo.y() + 0.5 * spacing_m; y < hi.y(); y += spacing_m) {
     for (double x = lo.x() + 0.5 * spacing_m; x < hi.x(); x += spacing_m) {
       if (!DiscFreeOnMap(map, {x, y}, robot_radius_m)) continue;
-      const MapView v = CastMapView(map, {x, y}, max_range_m);
-      localize::PlaceEntry e{x, y, 0.0, {v.ranges_m, {}}, {}};
+      const MapView v = CastMapView(map, {x, y}, max_range_m, colours);
+      localize::PlaceEntry e{x, y, 0.0, {v.ranges_m, v.colours}, {}};
       for (const MapRayKind k : v.kinds) {
         e.kinds.push_back(k == MapRayKind::kHit     ? core::ReadingKind::kHit
                           : k == MapRayKind::kClear ? core::ReadingKind::kClear
@@ -194,13 +211,14 @@ localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double r
       entries.push_back(std::move(e));
     }
   }
-  return {MapTableName(map, robot_radius_m, spacing_m, max_range_m), max_range_m,
+  return {MapTableName(map, colours, robot_radius_m, spacing_m, max_range_m), max_range_m,
           std::move(entries)};
 }
 
-LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::PlaceTable& table,
-                    const localize::PlaceView& query, const std::vector<core::ReadingKind>& kinds,
-                    double spacing_m, double coarse_cell_m, const LocateOptions& options) {
+LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::ColourMap& colours,
+                    const localize::PlaceTable& table, const localize::PlaceView& query,
+                    const std::vector<core::ReadingKind>& kinds, double spacing_m,
+                    double coarse_cell_m, const LocateOptions& options) {
   LocateAnswer answer;
   for (const core::ReadingKind k : kinds) answer.seen_bins += k != core::ReadingKind::kClear;
   const double cell = map.geometry.resolution();
@@ -234,7 +252,7 @@ LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::PlaceTable& 
     const localize::PlaceEntry& e = table.entries()[static_cast<std::size_t>(c.entry)];
     Eigen::Vector2d best_p(e.x_m, e.y_m);
     auto eval = [&](const Eigen::Vector2d& p) {
-      const MapView v = CastMapView(map, p, max_range);
+      const MapView v = CastMapView(map, p, max_range, colours);
       return BestShift(query, kinds, v, 0, kBins - 1, fine_sigma);
     };
     ShiftFit best = eval(best_p);
@@ -321,17 +339,31 @@ LocateResult RunLocate(const LocateRequest& request) {
   LocateResult result;
   result.coarse_cell_m = CoarseCellSize(world);
   result.spacing_m = DefaultTableSpacing(world);
+  if (!(request.range_factor >= 1.0)) {
+    throw core::InputError("", 0, "--range-factor", "must be a number >= 1");
+  }
   result.max_range_m =
+      request.range_factor *
       camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
   result.table_path =
       request.table_path.empty()
           ? (std::filesystem::path(request.map_path).parent_path() / "places.yaml").string()
           : request.table_path;
   if (request.pose) PlaceRobot(world, *request.pose, "--pose");  // throws when it does not fit
+  localize::ColourMap colours;
+  if (request.use_colours) {
+    result.colours_path =
+        request.colours_path.empty() ? ColourMapPathFor(request.map_path) : request.colours_path;
+    if (!request.colours_path.empty() || std::filesystem::exists(result.colours_path)) {
+      colours = ReadColourMap(result.colours_path, map.geometry);
+    } else {
+      result.colours_path.clear();
+    }
+  }
 
   const auto table_start = Clock::now();
   const std::string name =
-      MapTableName(map, world.robot().radius, result.spacing_m, result.max_range_m);
+      MapTableName(map, colours, world.robot().radius, result.spacing_m, result.max_range_m);
   localize::PlaceTable table;
   if (std::filesystem::exists(result.table_path)) {
     table = LoadPlaceTable(result.table_path);
@@ -339,7 +371,8 @@ LocateResult RunLocate(const LocateRequest& request) {
     result.table_replaced = !result.table_loaded;
   }
   if (!result.table_loaded) {
-    table = BuildMapPlaceTable(map, world.robot().radius, result.spacing_m, result.max_range_m);
+    table = BuildMapPlaceTable(map, colours, world.robot().radius, result.spacing_m,
+                               result.max_range_m);
     if (table.entries().empty()) {
       throw core::InputError(request.map_path, 0, "",
                              "the map has no free place where the robot fits");
@@ -362,8 +395,8 @@ LocateResult RunLocate(const LocateRequest& request) {
     const auto t0 = Clock::now();
     LocateTrial trial;
     trial.truth = truths[q];
-    trial.answer = Locate(map, table, seen.view, seen.kinds, result.spacing_m, result.coarse_cell_m,
-                          request.options);
+    trial.answer = Locate(map, colours, table, seen.view, seen.kinds, result.spacing_m,
+                          result.coarse_cell_m, request.options);
     locate_s += Seconds(Clock::now() - t0);
     trial.position_error_m =
         (trial.answer.world_T_robot.translation() - trial.truth.translation()).norm();
@@ -419,6 +452,8 @@ nlohmann::json LocateJson(const LocateRequest& request, const LocateResult& resu
           {"seed", request.seed},
           {"table", result.table_path},
           {"table_loaded", result.table_loaded},
+          {"colours", result.colours_path.empty() ? nlohmann::json(nullptr)
+                                                  : nlohmann::json(result.colours_path)},
           {"table_places", result.table_places},
           {"spacing_m", result.spacing_m},
           {"coarse_cell_m", result.coarse_cell_m},

@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "pirouette/app/floor_masker.h"
+#include "pirouette/app/place_recognition.h"
 #include "pirouette/core/obstacle_profile.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/localize/colour_map.h"
 #include "pirouette/localize/place_table.h"
 #include "pirouette/mapping/trinary_map.h"
 
@@ -29,31 +31,36 @@ enum class MapRayKind : std::uint8_t { kHit, kClear, kUnknown };
 struct MapView {
   std::vector<double> ranges_m;   // kRadialProfileBins, bin b: bearings [b, b + 1)° from +x
   std::vector<MapRayKind> kinds;  // per bin
+  // Per bin, the colour layer's class at a hit (kNone elsewhere or where the
+  // layer has none); empty without a colour layer.
+  std::vector<localize::ColourClass> colours;
 };
 
 // The map's ROP from `origin_m` (world frame), bin b cast along the bin's
 // centre bearing (b + 0.5)° counter-clockwise from the map's +x, in steps of
-// a quarter cell. Off the map counts as unknown.
+// a quarter cell. Off the map counts as unknown. With a colour layer (not
+// empty, on the map's geometry) each hit takes its cell's colour.
 MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origin_m,
-                    double max_range_m);
+                    double max_range_m, const localize::ColourMap& colours = {});
 
 // Whether a disc of `radius_m` at `p_m` covers only free cells of the map.
 bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, double radius_m);
 
-// A name for the map (its geometry and cells, an FNV-1a hash) and the table's
-// parameters (the robot's radius, the spacing, the max range): what a saved
-// place table's `world` field holds, so that a table is reused only for the
-// map and settings it was made for.
-std::string MapTableName(const mapping::TrinaryMap& map, double robot_radius_m, double spacing_m,
-                         double max_range_m);
+// A name for the map (its geometry and cells and its colour layer's, an FNV-1a hash) and the
+// table's parameters (the robot's radius, the spacing, the max range): what a saved place table's
+// `world` field holds, so that a table is reused only for the map and settings it was made for.
+std::string MapTableName(const mapping::TrinaryMap& map, const localize::ColourMap& colours,
+                         double robot_radius_m, double spacing_m, double max_range_m);
 
 // The place table of a map (Taylor, Geva & Boles 2005, §5.3's "table of
 // signatures and positions", made from the map instead of from pirouettes):
 // at the centres of a square grid of `spacing_m` over the map wherever a
 // disc of `robot_radius_m` covers only free cells, the map's ROP
 // (CastMapView) in a frame of heading 0; unknown rays are stored as hits at
-// their range (kinds 'b', blind). No colours: the map has none.
-localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map, double robot_radius_m,
+// their range (kinds 'b', blind). With a colour layer each place's view has
+// the colours of its hits (else none).
+localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map,
+                                        const localize::ColourMap& colours, double robot_radius_m,
                                         double spacing_m, double max_range_m);
 
 // How well a pirouette's ROP (robot frame) fits the map from a pose.
@@ -68,11 +75,16 @@ struct MapAgreement {
 // clear against clear agrees (1); hit against clear or clear against a hit nearer than the max
 // range less 2σ disagrees (0); a blind bin (an obstacle somewhere nearer than its range) agrees
 // with a map hit not farther than its range + 2σ, and disagrees with a clear ray. Rays the map
-// calls unknown are left out. The score is a weighted mean: a bin clear in both weighs kClearWeight
+// calls unknown are left out. Where the query and the map both give a colour class for a bin (a
+// hit or blind bin of a query with colours against a map hit with a colour layer) and the classes
+// differ, the bin's agreement is multiplied by kColourMismatchFactor: a symmetric room's mirror
+// image sees the same ranges but not the same colours (Taylor, Geva & Boles 2005, §5.1's colour
+// ROP). The score is a weighted mean: a bin clear in both weighs kClearWeight
 // (an open floor is clear almost everywhere, which tells places apart poorly), every other bin 1.
 inline constexpr double kAgreementSigmaFloorM = 0.02;
 inline constexpr double kAgreementSigmaFraction = 0.05;
 inline constexpr double kClearWeight = 0.25;
+inline constexpr double kColourMismatchFactor = 0.5;
 
 // The thresholds of an answer.
 struct LocateOptions {
@@ -107,12 +119,14 @@ struct LocateAnswer {
 // heading against the query (the agreement above, with the place's stored
 // view), refines the best options.candidates places by a local search of
 // position (down to a map cell) and heading (down to a quarter degree)
-// against CastMapView, and answers the best when its score, compared bins and
+// against CastMapView (with `colours`, the map's colour layer, which may be
+// empty), and answers the best when its score, compared bins and
 // margin over every candidate more than `coarse_cell_m` away pass `options`;
 // else not found, with the reason.
-LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::PlaceTable& table,
-                    const localize::PlaceView& query, const std::vector<core::ReadingKind>& kinds,
-                    double spacing_m, double coarse_cell_m, const LocateOptions& options = {});
+LocateAnswer Locate(const mapping::TrinaryMap& map, const localize::ColourMap& colours,
+                    const localize::PlaceTable& table, const localize::PlaceView& query,
+                    const std::vector<core::ReadingKind>& kinds, double spacing_m,
+                    double coarse_cell_m, const LocateOptions& options = {});
 
 struct LocateRequest {
   std::string map_path;             // map.yaml
@@ -120,6 +134,13 @@ struct LocateRequest {
   std::optional<core::Pose2> pose;  // the truth; or `random` poses
   int random = 0;                   // > 0: this many random poses where the robot fits
   std::string table_path;           // empty: places.yaml beside the map
+  // The map's colour layer; empty: ColourMapPathFor(map_path) when that file
+  // exists (else none).
+  std::string colours_path;
+  bool use_colours = true;  // false: ignore any colour layer
+  // The pirouette and the map's views reach this many times the map's range
+  // (camera::MaxRange at the default cell); see kPlaceRangeFactor.
+  double range_factor = kPlaceRangeFactor;
   std::uint64_t seed = 1;
   MaskSource method = MaskSource::kDefault;
   bool quiet = false;
@@ -138,6 +159,7 @@ struct LocateTrial {
 struct LocateResult {
   std::string table_path;
   bool table_loaded = false;
+  std::string colours_path;  // the colour layer read; empty: none
   // table_path held a place table made for another map or settings (or with
   // no places), which this run replaced.
   bool table_replaced = false;
@@ -153,7 +175,8 @@ struct LocateResult {
   double mean_locate_s = 0.0;  // per query, the pirouette's simulation excluded
 };
 
-// `pirouette locate`: reads the map (app::ReadRosMap) and the world, loads the
+// `pirouette locate`: reads the map (app::ReadRosMap), its colour layer (see
+// LocateRequest::colours_path; app::ReadColourMap) and the world, loads the
 // map's place table from request.table_path when the file exists and was made
 // for this map and settings (else builds it with BuildMapPlaceTable at
 // DefaultTableSpacing and writes it there, result.table_replaced when a file

@@ -139,6 +139,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   result.times.perceive_s = mapper.perceive_s();
   result.times.update_s = mapper.update_s();
+  result.colour_sightings = mapper.ColourSightings();
   result.grid = mapper.TakeGrid();
 
   const mapping::TrinaryMap map = WriteMapOutputs(request.out_dir, result);

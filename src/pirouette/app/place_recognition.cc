@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 
+#include "pirouette/app/column_colour.h"
 #include "pirouette/app/exploration.h"
 #include "pirouette/app/image_io.h"
 #include "pirouette/app/place_table_file.h"
@@ -37,37 +38,6 @@ int BinOf(double bearing_rad) {
   double a = std::fmod(bearing_rad, 2.0 * std::numbers::pi);
   if (a < 0.0) a += 2.0 * std::numbers::pi;
   return std::clamp(static_cast<int>(std::floor(core::RadToDeg(a) * kBins / 360.0)), 0, kBins - 1);
-}
-
-// The colour class of column u's obstacle base: the mean of the
-// kColourSampleRows pixels just above the floor's edge (the first non-floor
-// pixel up from the floor at the bottom); where the bottom rows hold no floor
-// (a blind reading: something fills the view), the mean of the bottom rows.
-// kNone where the floor reaches the top row.
-localize::ColourClass ColumnColour(const cv::Mat3b& bgr, const cv::Mat1b& mask, int u) {
-  const int bottom = mask.rows - 1;
-  int v = -1;
-  for (int k = 0; k < vision::kBlindSearchRows && bottom - k >= 0; ++k) {
-    if (mask(bottom - k, u) != 0) {
-      v = bottom - k;
-      break;
-    }
-  }
-  if (v < 0) {
-    v = bottom;  // blind: what fills the view is at the bottom
-  } else {
-    while (v >= 0 && mask(v, u) != 0) --v;
-    if (v < 0) return localize::ColourClass::kNone;
-  }
-  std::array<double, 3> sum{};
-  int n = 0;
-  for (int row = v; row > v - kColourSampleRows && row >= 0; --row) {
-    const cv::Vec3b& p = bgr(row, u);
-    for (int c = 0; c < 3; ++c) sum[c] += p[c];
-    ++n;
-  }
-  const auto mean = [&](int c) { return static_cast<std::uint8_t>(std::lround(sum[c] / n)); };
-  return localize::ClassifyColour(core::Rgb{mean(2), mean(1), mean(0)});
 }
 
 }  // namespace
@@ -184,7 +154,11 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
   result.world_name = world.name();
   result.coarse_cell_m = CoarseCellSize(world);
   result.spacing_m = request.spacing_m.value_or(DefaultTableSpacing(world));
+  if (!(request.range_factor >= 1.0)) {
+    throw core::InputError("", 0, "--range-factor", "must be a number >= 1");
+  }
   const double max_range =
+      request.range_factor *
       camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
   PlaceObserver observer(world, request.method, max_range, request.seed);
   ProgressLine line(request.quiet);
@@ -204,7 +178,8 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
     if (std::abs(table.max_range_m() - max_range) > 1e-6) {
       throw core::InputError(
           request.table_path, 0, "max_range",
-          fmt::format("the table was made with a max range of {:.4f} m, the camera's is {:.4f} m",
+          fmt::format("the table was made with a max range of {:.4f} m, this run reads to {:.4f} m "
+                      "(the camera's range times --range-factor)",
                       table.max_range_m(), max_range));
     }
     result.table_loaded = true;

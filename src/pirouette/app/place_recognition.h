@@ -28,10 +28,9 @@ struct ObservedPlace {
 // FloorMasker for the whole run, as a segmenter learns the floor online), its
 // obstacle profile extracted, the profiles merged (mapping::MergePirouette)
 // with bearings relative to the robot's heading at the pirouette's start, and
-// each hit or blind bin given the colour class (localize::ClassifyColour of
-// the mean colour of a few pixels just above the floor's edge in that column:
-// the base of what was hit; for a blind column, of its bottom pixels: what
-// fills the view) most of its readings voted for. Clear and colourless bins
+// each hit or blind bin given the colour class (app::ColumnColour: the base
+// of what was hit, or what fills the view of a blind column) most of its
+// readings voted for. Clear and colourless bins
 // are kNone. The constructor makes one pirouette at the world's robot start
 // first, so that the segmenter learns the floor there. Holds a reference to
 // the world.
@@ -54,9 +53,6 @@ class PlaceObserver {
   std::unique_ptr<Impl> impl_;
 };
 
-// Pixels above the floor's edge whose mean colour names a column's colour.
-inline constexpr int kColourSampleRows = 4;
-
 // The spacing of a table's grid for `world`: the planner's coarse cell
 // (explore::PlannerOptions::CoarseFactor at app::DefaultCellSize), but at
 // least kMinSpacingRadii robot radii, so that tables stay small (hundreds of
@@ -71,6 +67,14 @@ localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& obs
                                      double spacing_m,
                                      const std::function<void(int, int)>& progress = {});
 
+// How far a pirouette is read for recognising its place, in the map's range
+// (camera::MaxRange at the default cell, 0.41 m for the paper's robot): as
+// the pose tracker's view (localize::TrackerOptions::view_range_factor), out
+// to where the walls beyond the near floor tell places apart. Measured on
+// the shipped worlds (README): at 1x a pirouette in mid-floor sees little but
+// clear floor, and most places look alike.
+inline constexpr double kPlaceRangeFactor = 3.0;
+
 struct PlacesRequest {
   std::string world_path;
   int queries = 100;
@@ -84,6 +88,9 @@ struct PlacesRequest {
   // half a coarse cell); the answer is then the table place nearest the
   // refined position.
   bool refine = true;
+  // The pirouettes read the floor out to this many times the map's range
+  // (camera::MaxRange at the default cell); see kPlaceRangeFactor.
+  double range_factor = kPlaceRangeFactor;
 };
 
 // How one signature did over the queries.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -86,7 +87,9 @@ void SavePlaceTable(const localize::PlaceTable& table, const std::string& path) 
     world << YAML::DoubleQuoted << table.world();
     out << "world: " << world.c_str() << "\n";
   }
-  out << "max_range_m: " << table.max_range_m() << "\n";
+  // Every digit: a table is reused only for the max range it was made with.
+  out << "max_range_m: " << std::setprecision(17) << table.max_range_m() << std::setprecision(6)
+      << "\n";
   out << "places:\n";
   for (const localize::PlaceEntry& e : table.entries()) {
     out << std::fixed;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace pirouette::localize {
 
@@ -50,6 +51,45 @@ std::optional<ColourClass> ColourClassFromChar(char c) {
     if (kChars[i] == c) return static_cast<ColourClass>(i);
   }
   return std::nullopt;
+}
+
+core::Rgb ColourClassSwatch(ColourClass colour) {
+  switch (colour) {
+    case ColourClass::kBlack:
+      return {20, 20, 20};
+    case ColourClass::kWhite:
+      return {250, 250, 250};
+    case ColourClass::kGrey:
+      return {128, 128, 128};
+    case ColourClass::kNone:
+      throw std::invalid_argument("ColourClassSwatch: kNone has no colour");
+    default:
+      break;
+  }
+  // HSV to RGB at S = 1, V = 0.9: the IHLS hue of such a colour is its HSV
+  // hue at every multiple of 30°.
+  const double hue_deg = 30.0 * static_cast<int>(colour);
+  const double v = 0.9 * 255.0;
+  const double sector = hue_deg / 60.0;
+  const int i = static_cast<int>(std::floor(sector)) % 6;
+  const double f = sector - std::floor(sector);
+  const auto q = static_cast<std::uint8_t>(std::lround(v * (1.0 - f)));
+  const auto t = static_cast<std::uint8_t>(std::lround(v * f));
+  const auto m = static_cast<std::uint8_t>(std::lround(v));
+  switch (i) {
+    case 0:
+      return {m, t, 0};
+    case 1:
+      return {q, m, 0};
+    case 2:
+      return {0, m, t};
+    case 3:
+      return {0, q, m};
+    case 4:
+      return {t, 0, m};
+    default:
+      return {m, 0, q};
+  }
 }
 
 std::string_view ColourClassName(ColourClass colour) {

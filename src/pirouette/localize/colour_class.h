@@ -75,6 +75,12 @@ char ColourClassChar(ColourClass colour);
 // The inverse of ColourClassChar; nullopt for any other character.
 std::optional<ColourClass> ColourClassFromChar(char c);
 
+// A colour that stands for the class in a picture (colours.png): for hue k
+// the fully saturated colour of hue 30k° at value 0.9, black (20, 20, 20),
+// white (250, 250, 250), grey (128, 128, 128); ClassifyColour of each gives
+// the class back. kNone has no swatch (std::invalid_argument).
+core::Rgb ColourClassSwatch(ColourClass colour);
+
 // "red", "orange", …, "black", "white", "grey", "none".
 std::string_view ColourClassName(ColourClass colour);
 

@@ -52,5 +52,13 @@ TEST(ColourClassTest, CharsRoundTrip) {
   EXPECT_EQ(ColourClassName(ColourClass::kHue8), "blue");
 }
 
+TEST(ColourClassTest, EachSwatchIsItsOwnClass) {
+  for (int i = 0; i < kColourClasses; ++i) {
+    const auto c = static_cast<ColourClass>(i);
+    EXPECT_EQ(ClassifyColour(ColourClassSwatch(c)), c) << ColourClassName(c);
+  }
+  EXPECT_THROW(ColourClassSwatch(ColourClass::kNone), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace pirouette::localize

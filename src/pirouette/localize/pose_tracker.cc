@@ -2,10 +2,21 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "pirouette/core/angle.h"
 
 namespace pirouette::localize {
+
+void TrackerOptions::Check() const {
+  if (!(rotation_fraction > 0.0) || !(same_stop_m >= 0.0) || !(map_turn_steps >= 0.0) ||
+      !(view_range_factor >= 1.0)) {
+    throw std::invalid_argument(
+        "TrackerOptions: rotation_fraction must be > 0, same_stop_m and map_turn_steps >= 0, "
+        "view_range_factor >= 1");
+  }
+  heading.Check();
+}
 bool PoseTracker::StartsStop(const core::Pose2& odom_T_robot) const {
   return stop_.empty() || (odom_T_robot.translation() - stop_.back().odom.translation()).norm() >
                               options_.same_stop_m;

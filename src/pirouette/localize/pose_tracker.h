@@ -33,6 +33,11 @@ struct TrackerOptions {
   // bias their match.
   double view_range_factor = 3.0;
   HeadingMatcherOptions heading;
+
+  // Throws std::invalid_argument unless rotation_fraction > 0, same_stop_m
+  // >= 0, map_turn_steps >= 0, view_range_factor >= 1 and heading.Check()
+  // passes.
+  void Check() const;
 };
 
 // Pose tracking by matching what the camera sees against what it saw, a
@@ -53,7 +58,8 @@ struct TrackerOptions {
 // The map's frame is the odometry's at the start.
 class PoseTracker {
  public:
-  explicit PoseTracker(const TrackerOptions& options = {}) : options_(options) {}
+  // Throws std::invalid_argument for bad options (TrackerOptions::Check).
+  explicit PoseTracker(const TrackerOptions& options = {}) : options_(options) { options_.Check(); }
 
   // The map pose of an odometry pose.
   core::Pose2 ToMap(const core::Pose2& odom_T_robot) const { return map_T_odom_ * odom_T_robot; }

@@ -145,5 +145,15 @@ TEST(PoseTrackerTest, CorrectsTurnErrors) {
   EXPECT_LT(m, 0.7 * odometry_m);
 }
 
+TEST(PoseTrackerTest, RefusesBadOptions) {
+  TrackerOptions shorter;
+  shorter.view_range_factor = 0.5;  // the view must reach at least the map's range
+  EXPECT_THROW(PoseTracker{shorter}, std::invalid_argument);
+  TrackerOptions no_prior;
+  no_prior.rotation_fraction = 0.0;
+  EXPECT_THROW(PoseTracker{no_prior}, std::invalid_argument);
+  EXPECT_NO_THROW(PoseTracker{TrackerOptions{}});
+}
+
 }  // namespace
 }  // namespace pirouette::localize

@@ -1,0 +1,45 @@
+#include "pirouette/localize/colour_map.h"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+#include <utility>
+
+namespace pirouette::localize {
+
+ColourMap::ColourMap(core::GridGeometry geometry, std::vector<ColourClass> cells)
+    : geometry_(std::move(geometry)), cells_(std::move(cells)) {
+  if (cells_.size() != geometry_.CellCount()) {
+    throw std::invalid_argument("ColourMap: one class a cell of the geometry");
+  }
+}
+
+ColourMap ColourMap::FromSightings(const core::GridGeometry& geometry,
+                                   const std::vector<ColourSighting>& sightings) {
+  std::vector<std::array<int, kColourClasses>> votes(geometry.CellCount());
+  for (const ColourSighting& s : sightings) {
+    if (s.colour == ColourClass::kNone) continue;
+    const core::CellIndex c = geometry.CellOf(s.p_m);
+    if (!geometry.Contains(c)) continue;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const core::CellIndex n{c.x + dx, c.y + dy};
+        if (!geometry.Contains(n)) continue;
+        votes[geometry.Flat(n)][static_cast<std::size_t>(s.colour)] += dx == 0 && dy == 0 ? 2 : 1;
+      }
+    }
+  }
+  std::vector<ColourClass> cells(geometry.CellCount(), ColourClass::kNone);
+  for (std::size_t i = 0; i < votes.size(); ++i) {
+    const auto best = std::max_element(votes[i].begin(), votes[i].end());
+    if (*best > 0) cells[i] = static_cast<ColourClass>(best - votes[i].begin());
+  }
+  return {geometry, std::move(cells)};
+}
+
+ColourClass ColourMap::At(const core::CellIndex& c) const {
+  if (cells_.empty() || !geometry_.Contains(c)) return ColourClass::kNone;
+  return cells_[geometry_.Flat(c)];
+}
+
+}  // namespace pirouette::localize

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "pirouette/core/grid_geometry.h"
+#include "pirouette/localize/colour_class.h"
+
+namespace pirouette::localize {
+
+// One colour sighting: where (map frame) the camera saw the base of an
+// obstacle, and the colour class of what stood there (Taylor, Geva & Boles
+// 2005, §5.1's colour ROP, kept on the map).
+struct ColourSighting {
+  Eigen::Vector2d p_m = Eigen::Vector2d::Zero();
+  ColourClass colour = ColourClass::kNone;
+};
+
+// The colours of a map's cells: what a run's camera saw standing on each
+// cell, so that a later pirouette's colour ROP can be compared with the map
+// (a symmetric room's mirror image then looks different). One class a cell,
+// kNone where nothing coloured was seen. Row-major, row 0 the lowest y, as
+// mapping::TrinaryMap.
+class ColourMap {
+ public:
+  // An empty map: every cell kNone.
+  ColourMap() = default;
+  // cells must hold geometry.CellCount() classes (std::invalid_argument).
+  ColourMap(core::GridGeometry geometry, std::vector<ColourClass> cells);
+
+  // The map of `sightings` on `geometry`: each sighting votes for its class
+  // in its cell and the 8 around it (its own cell twice), so that a wall's
+  // cells take the colour seen at their neighbours' (an obstacle's base is
+  // read to a cell or so); a cell takes the class with the most votes (the
+  // lowest class on a tie), kNone without votes. Sightings off the geometry
+  // are dropped.
+  static ColourMap FromSightings(const core::GridGeometry& geometry,
+                                 const std::vector<ColourSighting>& sightings);
+
+  bool empty() const { return cells_.empty(); }
+  const core::GridGeometry& geometry() const { return geometry_; }
+  const std::vector<ColourClass>& cells() const { return cells_; }
+  // kNone off the map and for an empty map.
+  ColourClass At(const core::CellIndex& c) const;
+
+ private:
+  core::GridGeometry geometry_{1.0, Eigen::Vector2d::Zero(), 1, 1};
+  std::vector<ColourClass> cells_;
+};
+
+}  // namespace pirouette::localize
