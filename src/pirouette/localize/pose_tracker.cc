@@ -17,6 +17,7 @@ void TrackerOptions::Check() const {
   }
   heading.Check();
 }
+
 bool PoseTracker::StartsStop(const core::Pose2& odom_T_robot) const {
   return stop_.empty() || (odom_T_robot.translation() - stop_.back().odom.translation()).norm() >
                               options_.same_stop_m;
