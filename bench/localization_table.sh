@@ -3,18 +3,21 @@
 # odometry noise of 5% translation and 5% rotation, explored with
 # --localize none and --localize scan, and with scan and no noise (what the
 # tracker costs where there is nothing to correct). Prints a Markdown table.
-#   usage: [JOBS=2] bench/localization_table.sh [BINARY] [SEEDS]
-#   (default: build/release, 5 seeds, 2 runs at a time)
+#   usage: [JOBS=2] [MODES="none:0.05 scan:0.05 scan:0"] \
+#          bench/localization_table.sh [BINARY] [SEEDS]
+#   (default: build/release, 5 seeds, 2 runs at a time, all three modes;
+#   MODES picks some, for instance only the tracker's after a change to it)
 set -euo pipefail
 bin=${1:-build/release/apps/pirouette/pirouette}
 seeds=${2:-5}
 jobs=${JOBS:-2}
+modes=${MODES:-none:0.05 scan:0.05 scan:0}
 out=$(mktemp -d)
 # One line a run: world seed localize noise; run JOBS at a time.
 for world in worlds/*.yaml; do
   grep -q "^format: pirouette-world" "$world" || continue
   for seed in $(seq 1 "$seeds"); do
-    for mode in none:0.05 scan:0.05 scan:0; do
+    for mode in $modes; do
       echo "$world $seed ${mode%%:*} ${mode##*:}"
     done
   done

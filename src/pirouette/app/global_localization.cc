@@ -17,7 +17,6 @@
 #include "pirouette/app/progress_line.h"
 #include "pirouette/app/simulated_pirouette.h"
 #include "pirouette/app/stage_timer.h"
-#include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/mapping/radial_profile.h"
@@ -339,12 +338,7 @@ LocateResult RunLocate(const LocateRequest& request) {
   LocateResult result;
   result.coarse_cell_m = CoarseCellSize(world);
   result.spacing_m = DefaultTableSpacing(world);
-  if (!(request.range_factor >= 1.0)) {
-    throw core::InputError("", 0, "--range-factor", "must be a number >= 1");
-  }
-  result.max_range_m =
-      request.range_factor *
-      camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
+  result.max_range_m = PlaceMaxRange(world, request.range_factor);
   result.table_path =
       request.table_path.empty()
           ? (std::filesystem::path(request.map_path).parent_path() / "places.yaml").string()

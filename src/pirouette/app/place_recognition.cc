@@ -124,6 +124,14 @@ double DefaultTableSpacing(const sim::World& world) {
   return std::max(CoarseCellSize(world), kMinSpacingRadii * world.robot().radius);
 }
 
+double PlaceMaxRange(const sim::World& world, double range_factor) {
+  if (!(range_factor >= 1.0)) {
+    throw core::InputError("", 0, "--range-factor", "must be a number >= 1");
+  }
+  return range_factor *
+         camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
+}
+
 localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& observer,
                                      double spacing_m,
                                      const std::function<void(int, int)>& progress) {
@@ -154,12 +162,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
   result.world_name = world.name();
   result.coarse_cell_m = CoarseCellSize(world);
   result.spacing_m = request.spacing_m.value_or(DefaultTableSpacing(world));
-  if (!(request.range_factor >= 1.0)) {
-    throw core::InputError("", 0, "--range-factor", "must be a number >= 1");
-  }
-  const double max_range =
-      request.range_factor *
-      camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
+  const double max_range = PlaceMaxRange(world, request.range_factor);
   PlaceObserver observer(world, request.method, max_range, request.seed);
   ProgressLine line(request.quiet);
   const auto start = Clock::now();

@@ -75,6 +75,11 @@ localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& obs
 // clear floor, and most places look alike.
 inline constexpr double kPlaceRangeFactor = 3.0;
 
+// How far pirouettes are read in `world` for place recognition:
+// range_factor times camera::MaxRange at the default cell. Throws
+// core::InputError naming --range-factor unless range_factor >= 1.
+double PlaceMaxRange(const sim::World& world, double range_factor);
+
 struct PlacesRequest {
   std::string world_path;
   int queries = 100;
