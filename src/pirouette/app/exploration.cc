@@ -221,6 +221,11 @@ class Explorer {
     if (outcome.stopped_at_contact) {
       mapper_.AddContact(outcome.odometry);
       Look();
+      // Stopped at once: the robot was already touching something, most
+      // likely beside its front, where neither the bump (put straight ahead)
+      // nor the camera says. Every move that way would stop at once again
+      // (under odometry error this ended runs `stuck`), so back off first.
+      if (metres > 0.0 && std::abs(outcome.achieved) < 0.25 * cell_m_) BackOffContact();
     }
     Report();
     if (result_.moves >= options_.max_steps && result_.status.empty()) {
@@ -307,6 +312,22 @@ class Explorer {
     ++result_.backups;
     Drive(-back);
     Look();
+  }
+
+  // Backs straight away from a contact, as far as the camera's near blind
+  // range, where the map knows the floor behind is free within half the
+  // robot's radius of its path: a robot touching a wall it has mapped a few
+  // centimetres off (odometry error) overlaps that wall in the map, so the
+  // whole disc's corridor would refuse the very back-off that frees it.
+  void BackOffContact() {
+    const double back = look_.options().near_m;
+    const core::Pose2 pose = Pose();
+    if (!CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
+                           pose.translation() - back * pose.Direction(), 0.5 * radius_m_)) {
+      return;
+    }
+    ++result_.backups;
+    Drive(-back);
   }
 
   // The map the planner sees: unknown cells the robot cannot see from here

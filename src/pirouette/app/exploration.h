@@ -118,7 +118,7 @@ struct ExplorationResult {
   int pirouettes = 0;
   int frames = 0;
   int blocked_looks = 0;  // looks that found the way blocked
-  int backups = 0;        // backing up to see a blind area's base
+  int backups = 0;        // backing up to see a blind area's base or off a contact
   double path_length_m = 0.0;
   double rotation_deg = 0.0;
   double wall_time_s = 0.0;

@@ -10,10 +10,11 @@ namespace pirouette::localize {
 
 void TrackerOptions::Check() const {
   if (!(rotation_fraction > 0.0) || !(same_stop_m >= 0.0) || !(map_turn_steps >= 0.0) ||
-      !(view_range_factor >= 1.0)) {
+      !(view_range_factor >= 1.0) || !(map_turn_range_factor >= 1.0) ||
+      !(map_turn_range_factor <= view_range_factor)) {
     throw std::invalid_argument(
         "TrackerOptions: rotation_fraction must be > 0, same_stop_m and map_turn_steps >= 0, "
-        "view_range_factor >= 1");
+        "view_range_factor >= 1, map_turn_range_factor in [1, view_range_factor]");
   }
   heading.Check();
 }
@@ -53,7 +54,11 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
     stop_.clear();
     stop_position_ = predicted.translation();
   }
-  StopFrame frame{profile, Within(profile, map_range_m), odom_T_robot, predicted.heading()};
+  // The map turn's range: map_turn_range_factor times the map's, or as far
+  // as the profile was read if that is less (never less than the map's).
+  const double turn_range_m = std::max(
+      map_range_m, std::min(map_range_m * options_.map_turn_range_factor, profile.max_range_m));
+  StopFrame frame{profile, Within(profile, turn_range_m), odom_T_robot, predicted.heading()};
 
   // The new frame's heading relative to the stop's earlier frames (odometry
   // says how far it turned, within rotation_fraction): its readings against
@@ -75,7 +80,7 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
   // stop's position.
   if (stop_.size() >= options_.min_frames_for_map_turn) {
     core::ObstacleProfile all;
-    all.max_range_m = map_range_m;
+    all.max_range_m = turn_range_m;
     const double reference = stop_.front().heading_rad;
     for (const StopFrame& f : stop_) {
       for (core::RangeReading r : f.map_profile.readings) {
@@ -83,7 +88,7 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
         all.readings.push_back(r);
       }
     }
-    const MapProfile map(before, stop_position_, map_range_m);
+    const MapProfile map(before, stop_position_, turn_range_m);
     const HeadingMatch turn = MatchHeading(
         map, all, reference, options_.map_turn_steps * options_.heading.step_rad, options_.heading);
     for (StopFrame& f : stop_) f.heading_rad += turn.offset_rad;
