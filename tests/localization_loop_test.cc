@@ -54,14 +54,14 @@ TEST(LocalizationLoopTest, TrackingTakesOutMuchOfTheHeadingErrorOfNoisyTurns) {
 
 // Under odometry error the robot can end a move touching a wall it mapped a
 // few centimetres off, beside its front: every move that way then stops at
-// once. This run (the maze, seed 3, 5% noise) ended `stuck` so, after 40
-// such moves in a row, before the explorer learnt to back off such a
-// contact; it now backs off and completes.
+// once. This run (the maze, seed 3, 5% noise) used to end `stuck` after 40
+// such moves in a row; now the explorer backs off such a contact, and the
+// run completes.
 TEST(LocalizationLoopTest, ARobotStuckAgainstAWallBacksOffAndGoesOn) {
   const sim::World world = sim::LoadWorldFile(PIROUETTE_WORLDS_DIR "/maze.yaml");
   const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.05, 3);
   EXPECT_EQ(result.status, "complete") << result.reason;
-  EXPECT_GT(result.backups, 0);
+  EXPECT_GT(result.contact_backoffs, 0);
 }
 
 }  // namespace

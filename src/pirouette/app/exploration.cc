@@ -327,6 +327,7 @@ class Explorer {
       return;
     }
     ++result_.backups;
+    ++result_.contact_backoffs;
     Drive(-back);
   }
 

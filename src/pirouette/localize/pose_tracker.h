@@ -83,8 +83,9 @@ class PoseTracker {
   // view_range_factor times map_range_m: the frames are matched with each
   // other over all of it, and with the map out to map_turn_range_factor
   // times map_range_m). `before` is the map as it was before the stop's
-  // first frame (the caller keeps it when StartsStop). Returns the map poses of all the stop's
-  // frames so far, in order (they may all move): the caller puts them in `before` again.
+  // first frame (the caller keeps it when StartsStop). Returns the map poses
+  // of all the stop's frames so far, in order (they may all move): the
+  // caller puts them in `before` again.
   std::vector<core::Pose2> Track(const mapping::OccupancyGrid& before,
                                  const core::ObstacleProfile& profile, double map_range_m,
                                  const core::Pose2& odom_T_robot);
