@@ -298,37 +298,35 @@ class Explorer {
     return merged;
   }
 
+  // Backs straight up by the camera's near blind range where the map knows
+  // the floor behind is free within `half_width_m` of the path (counted in
+  // backups); returns whether it did.
+  bool BackUpOverKnownFree(double half_width_m) {
+    const double back = look_.options().near_m;
+    const core::Pose2 pose = Pose();
+    if (!CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
+                           pose.translation() - back * pose.Direction(), half_width_m)) {
+      return false;
+    }
+    ++result_.backups;
+    Drive(-back);
+    return true;
+  }
+
   // The paper's unfinished active vision: an obstacle's base hides in the
   // blind area under the camera, so back up, where the map knows the floor
   // behind is free, and look again.
   void BackUpToSee() {
-    const double back = look_.options().near_m;
-    const mapping::TrinaryMap map = mapper_.grid().ToTrinary();
-    const core::Pose2 pose = Pose();
-    if (!CorridorKnownFree(map, pose.translation(), pose.translation() - back * pose.Direction(),
-                           radius_m_)) {
-      return;
-    }
-    ++result_.backups;
-    Drive(-back);
-    Look();
+    if (BackUpOverKnownFree(radius_m_)) Look();
   }
 
-  // Backs straight away from a contact, as far as the camera's near blind
-  // range, where the map knows the floor behind is free within half the
-  // robot's radius of its path: a robot touching a wall it has mapped a few
-  // centimetres off (odometry error) overlaps that wall in the map, so the
-  // whole disc's corridor would refuse the very back-off that frees it.
+  // Backs away from a contact where the floor behind is known free within
+  // half the robot's radius of its path: a robot touching a wall it has
+  // mapped a few centimetres off (odometry error) overlaps that wall in the
+  // map, so the whole disc's corridor would refuse the very back-off that
+  // frees it.
   void BackOffContact() {
-    const double back = look_.options().near_m;
-    const core::Pose2 pose = Pose();
-    if (!CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
-                           pose.translation() - back * pose.Direction(), 0.5 * radius_m_)) {
-      return;
-    }
-    ++result_.backups;
-    ++result_.contact_backoffs;
-    Drive(-back);
+    if (BackUpOverKnownFree(0.5 * radius_m_)) ++result_.contact_backoffs;
   }
 
   // The map the planner sees: unknown cells the robot cannot see from here

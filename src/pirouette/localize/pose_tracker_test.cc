@@ -59,14 +59,11 @@ std::pair<double, double> Track(const std::vector<core::Pose2>& truth,
     stop.push_back(profile);
     grid = before;
     for (std::size_t k = 0; k < stop.size(); ++k) mapping::InsertProfile(grid, stop[k], poses[k]);
-    worst_deg = std::max(
-        worst_deg,
-        std::abs(core::NormalizeAngle(poses.back().heading() - truth[i].heading())) * 180.0 / kPi);
+    const double deg =
+        std::abs(core::NormalizeAngle(poses.back().heading() - truth[i].heading())) * 180.0 / kPi;
+    worst_deg = std::max(worst_deg, deg);
     worst_m = std::max(worst_m, (poses.back().translation() - truth[i].translation()).norm());
-    if (final_deg != nullptr) {
-      *final_deg =
-          std::abs(core::NormalizeAngle(poses.back().heading() - truth[i].heading())) * 180.0 / kPi;
-    }
+    if (final_deg != nullptr) *final_deg = deg;
   }
   return {worst_deg, worst_m};
 }
