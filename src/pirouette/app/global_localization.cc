@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "pirouette/app/colour_map_file.h"
 #include "pirouette/app/exploration.h"
@@ -120,6 +121,27 @@ ShiftFit BestShift(const localize::PlaceView& query, const std::vector<core::Rea
   return best;
 }
 
+// Whether `c` lies in a gap between obstacle cells: walking round its 8
+// neighbours, the occupied ones form two or more separate runs (a hole in a
+// wall, or the corner two diagonal cells of an outline leave open). A cell
+// beside one obstacle's edge only (the unseen floor in its shadow) has one
+// run. Returns one of the occupied neighbours when it does.
+std::optional<core::CellIndex> GapBetweenObstacleCells(const mapping::TrinaryMap& map,
+                                                       const core::CellIndex& c) {
+  static constexpr int kRing[8][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
+                                      {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+  bool occupied[8];
+  std::optional<core::CellIndex> any;
+  for (int i = 0; i < 8; ++i) {
+    const core::CellIndex n{c.x + kRing[i][0], c.y + kRing[i][1]};
+    occupied[i] = map.geometry.Contains(n) && map.At(n) == mapping::CellState::kOccupied;
+    if (occupied[i] && !any) any = n;
+  }
+  int runs = 0;
+  for (int i = 0; i < 8; ++i) runs += occupied[i] && !occupied[(i + 7) % 8] ? 1 : 0;
+  return runs >= 2 ? any : std::nullopt;
+}
+
 std::uint64_t Fnv(std::uint64_t h, const void* data, std::size_t n) {
   const auto* p = static_cast<const unsigned char*>(data);
   for (std::size_t i = 0; i < n; ++i) {
@@ -143,9 +165,18 @@ MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origi
     const double a = (b + 0.5) * kBinRad;
     const Eigen::Vector2d dir(std::cos(a), std::sin(a));
     for (double t = step; t <= max_range_m; t += step) {
-      const core::CellIndex c = g.CellOf(origin_m + t * dir);
-      const mapping::CellState s = g.Contains(c) ? map.At(c) : mapping::CellState::kUnknown;
+      core::CellIndex c = g.CellOf(origin_m + t * dir);
+      mapping::CellState s = g.Contains(c) ? map.At(c) : mapping::CellState::kUnknown;
       if (s == mapping::CellState::kFree) continue;
+      // An unknown cell in a gap between obstacle cells is a hole in an
+      // obstacle's mapped outline (its inside is unseen): the ray has met
+      // that obstacle.
+      if (s == mapping::CellState::kUnknown) {
+        if (const std::optional<core::CellIndex> o = GapBetweenObstacleCells(map, c)) {
+          c = *o;
+          s = mapping::CellState::kOccupied;
+        }
+      }
       v.ranges_m[static_cast<std::size_t>(b)] = t;
       v.kinds[static_cast<std::size_t>(b)] =
           s == mapping::CellState::kOccupied ? MapRayKind::kHit : MapRayKind::kUnknown;
@@ -185,8 +216,10 @@ std::string MapTableName(const mapping::TrinaryMap& map, const localize::ColourM
   if (!colours.empty()) {
     h = Fnv(h, colours.cells().data(), colours.cells().size() * sizeof(localize::ColourClass));
   }
-  return fmt::format("map {:016x} radius {:.4f} spacing {:.4f} range {:.4f}", h, robot_radius_m,
-                     spacing_m, max_range_m);
+  // "rays 2": CastMapView meets an obstacle through a gap in its outline (a
+  // table made before that is not reused).
+  return fmt::format("map {:016x} radius {:.4f} spacing {:.4f} range {:.4f} rays 2", h,
+                     robot_radius_m, spacing_m, max_range_m);
 }
 
 localize::PlaceTable BuildMapPlaceTable(const mapping::TrinaryMap& map,

@@ -25,7 +25,11 @@ namespace pirouette::app {
 // What the map says one bearing from a point would show the camera: the first
 // occupied cell within max_range_m (kHit, its range), free cells all the way
 // (kClear, range max_range_m), or a cell that is neither first (kUnknown, the
-// range to it: the map cannot say what lies there).
+// range to it: the map cannot say what lies there). An unknown cell in a gap
+// between occupied cells (its occupied neighbours form two or more separate
+// runs round it) counts as a hit on one of them: it is a hole in an
+// obstacle's mapped outline, its inside unseen. (Unknown floor beside one
+// obstacle's edge, in its shadow, stays unknown.)
 enum class MapRayKind : std::uint8_t { kHit, kClear, kUnknown };
 
 struct MapView {
@@ -39,7 +43,7 @@ struct MapView {
 // The map's ROP from `origin_m` (world frame), bin b cast along the bin's
 // centre bearing (b + 0.5)° counter-clockwise from the map's +x, in steps of
 // a quarter cell. Off the map counts as unknown. With a colour layer (not
-// empty, on the map's geometry) each hit takes its cell's colour.
+// empty, on the map's geometry) each hit takes its (occupied) cell's colour.
 MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origin_m,
                     double max_range_m, const localize::ColourMap& colours = {});
 
@@ -47,8 +51,9 @@ MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origi
 bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, double radius_m);
 
 // A name for the map (its geometry and cells and its colour layer's, an FNV-1a hash) and the
-// table's parameters (the robot's radius, the spacing, the max range): what a saved place table's
-// `world` field holds, so that a table is reused only for the map and settings it was made for.
+// table's parameters (the robot's radius, the spacing, the max range) and the version of
+// CastMapView's rays: what a saved place table's `world` field holds, so that a table is reused
+// only for the map, settings and ray casting it was made with.
 std::string MapTableName(const mapping::TrinaryMap& map, const localize::ColourMap& colours,
                          double robot_radius_m, double spacing_m, double max_range_m);
 

@@ -109,5 +109,38 @@ TEST(GlobalLocalizationTest, TheMapViewHasItsHitsColours) {
   EXPECT_TRUE(CastMapView(room.map, {0.5, 0.3}, kMaxRange).colours.empty());
 }
 
+TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle) {
+  Room room = MakeRoom();
+  const core::GridGeometry& g = room.map.geometry;
+  std::vector<localize::ColourClass> colours = room.colours.cells();
+  // A block of cells x 35..39, y 13..17: its outline occupied (hue 4), its
+  // inside unknown, and a hole in its west face at (35, 15).
+  for (int y = 13; y <= 17; ++y) {
+    for (int x = 35; x <= 39; ++x) {
+      const bool outline = x == 35 || x == 39 || y == 13 || y == 17;
+      room.map.cells[g.Flat({x, y})] =
+          outline ? mapping::CellState::kOccupied : mapping::CellState::kUnknown;
+      if (outline) colours[g.Flat({x, y})] = localize::ColourClass::kHue4;
+    }
+  }
+  room.map.cells[g.Flat({35, 15})] = mapping::CellState::kUnknown;
+  colours[g.Flat({35, 15})] = localize::ColourClass::kNone;
+  // Unseen floor north, with no obstacle beside it; and south-west, in the
+  // shadow of one obstacle cell (beside one edge only).
+  for (int y = 20; y <= 22; ++y) room.map.cells[g.Flat({25, y})] = mapping::CellState::kUnknown;
+  room.map.cells[g.Flat({22, 10})] = mapping::CellState::kOccupied;
+  room.map.cells[g.Flat({21, 11})] = mapping::CellState::kUnknown;
+  room.colours = localize::ColourMap(g, std::move(colours));
+
+  const MapView v = CastMapView(room.map, {0.51, 0.31}, kMaxRange, room.colours);
+  EXPECT_EQ(v.kinds[0], MapRayKind::kHit);  // east, through the hole
+  EXPECT_NEAR(v.ranges_m[0], 0.19, 0.01);
+  EXPECT_EQ(v.colours[0], localize::ColourClass::kHue4);
+  EXPECT_EQ(v.kinds[90], MapRayKind::kUnknown);  // north: the map cannot say
+  EXPECT_NEAR(v.ranges_m[90], 0.09, 0.01);
+  EXPECT_EQ(v.kinds[225], MapRayKind::kUnknown);  // south-west, the shadow
+  EXPECT_NEAR(v.ranges_m[225], 0.10, 0.01);
+}
+
 }  // namespace
 }  // namespace pirouette::app
