@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -189,6 +191,47 @@ MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origi
   return v;
 }
 
+mapping::TrinaryMap FillPinholes(const mapping::TrinaryMap& map, int max_cells) {
+  const core::GridGeometry& g = map.geometry;
+  cv::Mat unknown(g.height(), g.width(), CV_8U, cv::Scalar(0));
+  cv::Mat occupied(g.height(), g.width(), CV_8U, cv::Scalar(0));
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      const mapping::CellState s = map.At({x, y});
+      unknown.at<std::uint8_t>(y, x) = s == mapping::CellState::kUnknown ? 255 : 0;
+      occupied.at<std::uint8_t>(y, x) = s == mapping::CellState::kOccupied ? 255 : 0;
+    }
+  }
+  cv::Mat labels;
+  cv::Mat stats;
+  cv::Mat centroids;
+  const int n = cv::connectedComponentsWithStats(unknown, labels, stats, centroids, 4, CV_32S);
+  // A group touches an obstacle when an occupied cell is among its cells' 8
+  // neighbours: when the occupied cells grown by one cell overlap it.
+  cv::Mat near_occupied;
+  cv::dilate(occupied, near_occupied, cv::Mat::ones(3, 3, CV_8U));
+  std::vector<bool> fill(static_cast<std::size_t>(n), false);
+  for (int i = 1; i < n; ++i) {
+    fill[static_cast<std::size_t>(i)] = stats.at<int>(i, cv::CC_STAT_AREA) <= max_cells;
+  }
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      if (near_occupied.at<std::uint8_t>(y, x) != 0) {
+        fill[static_cast<std::size_t>(labels.at<int>(y, x))] = false;
+      }
+    }
+  }
+  mapping::TrinaryMap out = map;
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      if (fill[static_cast<std::size_t>(labels.at<int>(y, x))]) {
+        out.cells[g.Flat({x, y})] = mapping::CellState::kFree;
+      }
+    }
+  }
+  return out;
+}
+
 bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, double radius_m) {
   const core::GridGeometry& g = map.geometry;
   const core::CellIndex lo = g.CellOf(p_m - Eigen::Vector2d(radius_m, radius_m));
@@ -366,7 +409,8 @@ LocateResult RunLocate(const LocateRequest& request) {
   if (!request.pose && request.random < 1) {
     throw core::InputError("", 0, "--pose", "give --pose X,Y,H or --random N (N >= 1)");
   }
-  const mapping::TrinaryMap map = ReadRosMap(request.map_path);
+  // Rays pass the map's pinholes (FillPinholes), here and in the table.
+  const mapping::TrinaryMap map = FillPinholes(ReadRosMap(request.map_path), kPinholeCells);
   const sim::World world = sim::LoadWorldFile(request.world_path);
   LocateResult result;
   result.coarse_cell_m = CoarseCellSize(world);

@@ -47,6 +47,17 @@ struct MapView {
 MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origin_m,
                     double max_range_m, const localize::ColourMap& colours = {});
 
+// The map with its pinholes filled: every 4-connected group of at most
+// `max_cells` unknown cells with no occupied cell among their 8 neighbours
+// (floor seen free all round whose own evidence never crossed the map's
+// thresholds) becomes free, so that a ray of CastMapView passes it instead of
+// stopping there. Larger unknown areas, and unknown cells beside an obstacle,
+// are kept.
+mapping::TrinaryMap FillPinholes(const mapping::TrinaryMap& map, int max_cells);
+
+// The largest pinhole RunLocate fills (cells).
+inline constexpr int kPinholeCells = 4;
+
 // Whether a disc of `radius_m` at `p_m` covers only free cells of the map.
 bool DiscFreeOnMap(const mapping::TrinaryMap& map, const Eigen::Vector2d& p_m, double radius_m);
 

@@ -142,5 +142,34 @@ TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle
   EXPECT_NEAR(v.ranges_m[225], 0.10, 0.01);
 }
 
+TEST(GlobalLocalizationTest, PinholesInSeenFloorAreFilledAndTheRestKept) {
+  Room room = MakeRoom();
+  const core::GridGeometry& g = room.map.geometry;
+  const auto set = [&](int x, int y, mapping::CellState s) { room.map.cells[g.Flat({x, y})] = s; };
+  set(10, 10, mapping::CellState::kUnknown);  // a pinhole
+  set(20, 10, mapping::CellState::kUnknown);  // a pinhole of 4 cells
+  set(21, 10, mapping::CellState::kUnknown);
+  set(20, 11, mapping::CellState::kUnknown);
+  set(21, 11, mapping::CellState::kUnknown);
+  for (int x = 30; x <= 34; ++x) set(x, 10, mapping::CellState::kUnknown);  // 5 cells: kept
+  set(10, 20, mapping::CellState::kUnknown);  // beside an obstacle cell: kept
+  set(11, 21, mapping::CellState::kOccupied);
+  set(1, 15, mapping::CellState::kUnknown);  // beside the west wall: kept
+
+  const mapping::TrinaryMap filled = FillPinholes(room.map, 4);
+  EXPECT_EQ(filled.At({10, 10}), mapping::CellState::kFree);
+  EXPECT_EQ(filled.At({21, 11}), mapping::CellState::kFree);
+  EXPECT_EQ(filled.At({32, 10}), mapping::CellState::kUnknown);
+  EXPECT_EQ(filled.At({10, 20}), mapping::CellState::kUnknown);
+  EXPECT_EQ(filled.At({1, 15}), mapping::CellState::kUnknown);
+  EXPECT_EQ(filled.At({11, 21}), mapping::CellState::kOccupied);
+  // A ray east along row 10 stopped at the first pinhole; it now passes both
+  // and stops at the group of 5.
+  EXPECT_NEAR(CastMapView(room.map, {0.05, 0.21}, kMaxRange).ranges_m[0], 0.15, 0.01);
+  const MapView v = CastMapView(filled, {0.05, 0.21}, kMaxRange);
+  EXPECT_EQ(v.kinds[0], MapRayKind::kUnknown);
+  EXPECT_NEAR(v.ranges_m[0], 0.55, 0.01);
+}
+
 }  // namespace
 }  // namespace pirouette::app
