@@ -56,7 +56,8 @@ Command AddLocateCommand(CLI::App& parent) {
   cmd->add_option("--method", *method, "floor segmentation: paper | default | truth")
       ->capture_default_str();
   cmd->add_option("--range-factor", request->range_factor,
-                  "read the pirouette and the map out to this many times the map's range")
+                  "read the pirouette and the map out to this many times the map's range, but no "
+                  "farther than every image column sees the floor")
       ->capture_default_str();
   cmd->add_option("--out", *out, "write the JSON report here (atomically)");
   cmd->add_flag("--quiet", request->quiet, "no progress line");

@@ -41,7 +41,8 @@ Command AddPlacesCommand(CLI::App& parent) {
   cmd->add_option("--method", *method, "floor segmentation: paper | default | truth")
       ->capture_default_str();
   cmd->add_option("--range-factor", request->range_factor,
-                  "read the pirouettes out to this many times the map's range")
+                  "read the pirouettes out to this many times the map's range, but no farther "
+                  "than every image column sees the floor")
       ->capture_default_str();
   cmd->add_option("--out", *out, "write the JSON report here (atomically)");
   auto no_refine = std::make_shared<bool>(false);

@@ -128,8 +128,9 @@ double PlaceMaxRange(const sim::World& world, double range_factor) {
   if (!(range_factor >= 1.0)) {
     throw core::InputError("", 0, "--range-factor", "must be a number >= 1");
   }
-  return range_factor *
-         camera::MaxRange(world.robot().camera, DefaultCellSize(world.robot().radius));
+  const camera::CameraModel& camera = world.robot().camera;
+  return camera::LongRange(camera, camera::MaxRange(camera, DefaultCellSize(world.robot().radius)),
+                           range_factor);
 }
 
 localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& observer,

@@ -76,8 +76,13 @@ localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& obs
 inline constexpr double kPlaceRangeFactor = 3.0;
 
 // How far pirouettes are read in `world` for place recognition:
-// range_factor times camera::MaxRange at the default cell. Throws
-// core::InputError naming --range-factor unless range_factor >= 1.
+// range_factor times camera::MaxRange at the default cell, but no farther
+// than camera::FloorSeenInEveryColumn (and never below the map's range):
+// beyond that, a column whose floor runs to the top row would call a wall
+// out of its view open floor, and the pirouette would disagree with a map
+// that has the wall (the paper's camera sees 1.10 m at its top row's centre
+// against 3 × 0.41 m). Throws core::InputError naming --range-factor unless
+// range_factor >= 1.
 double PlaceMaxRange(const sim::World& world, double range_factor);
 
 struct PlacesRequest {

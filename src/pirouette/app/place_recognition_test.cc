@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "pirouette/app/exploration.h"
+#include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/sim/world_file.h"
@@ -55,6 +57,19 @@ TEST(PlaceRecognitionTest, TheHeadingInvariantSignaturesFindMostPlaces) {
   const nlohmann::json json = PlacesJson(request, result);
   EXPECT_EQ(json["format"], "pirouette-places-report/1");
   EXPECT_TRUE(json["signatures"].contains("colour"));
+}
+
+TEST(PlaceRecognitionTest, PirouettesAreReadNoFartherThanEveryColumnSeesTheFloor) {
+  const sim::World world = sim::LoadWorldFile(World("soccer_field"));
+  const camera::CameraModel& camera = world.robot().camera;
+  const double map_range = camera::MaxRange(camera, DefaultCellSize(world.robot().radius));
+  EXPECT_DOUBLE_EQ(PlaceMaxRange(world, 1.0), map_range);
+  EXPECT_DOUBLE_EQ(PlaceMaxRange(world, 2.0), 2.0 * map_range);  // 0.81 m
+  // The paper's camera: its centre columns see the floor to 1.10 m at their
+  // top row, short of 3 × 0.41 m.
+  EXPECT_LT(camera::FloorSeenInEveryColumn(camera), 3.0 * map_range);
+  EXPECT_DOUBLE_EQ(PlaceMaxRange(world, 3.0), camera::FloorSeenInEveryColumn(camera));
+  EXPECT_THROW(PlaceMaxRange(world, 0.5), core::InputError);
 }
 
 TEST(PlaceRecognitionTest, BadRequestsAreInputErrors) {

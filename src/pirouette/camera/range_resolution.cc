@@ -1,7 +1,9 @@
 #include "pirouette/camera/range_resolution.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace pirouette::camera {
 namespace {
@@ -59,6 +61,19 @@ std::optional<RangeInterval> MeasurableRanges(const CameraModel& camera) {
   const std::optional<RowInterval> rows = MeasurableRows(camera);
   if (!rows) return std::nullopt;
   return RangeInterval{*RangeAtRow(camera, rows->bottom), *RangeAtRow(camera, rows->top)};
+}
+
+double FloorSeenInEveryColumn(const CameraModel& camera) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int u = 0; u < camera.width(); ++u) {
+    const std::optional<Eigen::Vector2d> p_robot = camera.FloorPoint(Eigen::Vector2d(u, 0.0));
+    if (p_robot) nearest = std::min(nearest, p_robot->norm());
+  }
+  return nearest;
+}
+
+double LongRange(const CameraModel& camera, double map_range_m, double factor) {
+  return std::max(map_range_m, std::min(factor * map_range_m, FloorSeenInEveryColumn(camera)));
 }
 
 std::optional<RangeError> RangeErrorAt(const CameraModel& camera, double range_m) {

@@ -51,6 +51,20 @@ std::optional<RangeInterval> MeasurableRanges(const CameraModel& camera);
 // when the farthest is finer, the farthest. Requires cell_size_m > 0.
 double MaxRange(const CameraModel& camera, double cell_size_m = 0.01);
 
+// The range out to which every column of the image sees the floor: the
+// nearest, over the columns, of the floor point at the top row's pixel centre
+// (a column whose top row lies above the horizon sees the floor out to the
+// horizon, and counts as infinitely far). A profile read farther than this
+// cannot tell a wall just beyond some column's top row from open floor: the
+// column's floor runs to the top row with no edge. Infinity when no column's
+// top row sees the floor.
+double FloorSeenInEveryColumn(const CameraModel& camera);
+
+// How far to read a profile for matching, `factor` (>= 1) times the map's
+// range `map_range_m`: no farther than FloorSeenInEveryColumn, and never
+// below map_range_m.
+double LongRange(const CameraModel& camera, double map_range_m, double factor);
+
 // RangeErrorAt every `step_m` from the first multiple of step_m that the
 // camera measures to `to_m` (or the farthest it measures). Requires step_m > 0.
 std::vector<RangeError> RangeErrorTable(const CameraModel& camera, double step_m, double to_m);

@@ -49,6 +49,23 @@ TEST(RangeResolutionTest, ErrorGrowsWithRange) {
   }
 }
 
+TEST(RangeResolutionTest, EveryColumnSeesTheFloorOutToItsTopRowsNearestPoint) {
+  const CameraModel camera = Pinhole(0.11, 30.0, 0.03);
+  // The pinhole's top row is nearest the robot at its centre column (x 159.5,
+  // between two columns: the nearest whole column sees a hair farther).
+  const double top = PinholeRange(0.0, 0.11, 30.0, 0.03);
+  EXPECT_GE(FloorSeenInEveryColumn(camera), top);
+  EXPECT_NEAR(FloorSeenInEveryColumn(camera), top, 1e-3);
+  // Tilted up so that the top row lies above the horizon: every column sees
+  // the floor out to the horizon.
+  EXPECT_TRUE(std::isinf(FloorSeenInEveryColumn(Pinhole(0.11, 10.0, 0.03))));
+
+  EXPECT_DOUBLE_EQ(LongRange(camera, 0.40, 2.0), 0.80);
+  EXPECT_DOUBLE_EQ(LongRange(camera, 0.40, 3.0), FloorSeenInEveryColumn(camera));  // < 1.2 m
+  EXPECT_DOUBLE_EQ(LongRange(camera, 0.40, 1.0), 0.40);
+  EXPECT_DOUBLE_EQ(LongRange(camera, 1.50, 3.0), 1.50);  // never below the map's range
+}
+
 TEST(RangeResolutionTest, OutsideTheViewIsNotMeasured) {
   const CameraModel camera = Pinhole(0.11, 30.0, 0.03);
   const std::optional<RangeInterval> ranges = MeasurableRanges(camera);

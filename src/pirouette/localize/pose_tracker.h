@@ -31,6 +31,11 @@ struct TrackerOptions {
   // walls beyond tell it well. Two frames from one place see a far wall at
   // the same image rows, so the long range's coarse resolution does not
   // bias their match.
+  // For the paper's camera 3 × 0.41 m lies beyond what the image's centre
+  // columns see at their top row (1.10 m, camera::FloorSeenInEveryColumn),
+  // so a wall between the two reads clear there; reading no farther
+  // (camera::LongRange, as place recognition does) was measured and tracked
+  // worse (README, "Localization: pose tracking"), so the tracker keeps it.
   double view_range_factor = 3.0;
   // The stop's common turn against the map reads the stop's frames and the
   // map out to this many times the map's range (1 to view_range_factor):
