@@ -122,6 +122,17 @@ TEST_F(LocateCliTest, DefaultTableGoesBesideTheMap) {
   EXPECT_TRUE(fs::exists(dir_ / "soccer" / "places.yaml"));
 }
 
+TEST_F(LocateCliTest, APictureShowsTheMapAndTheAnswer) {
+  const fs::path picture = dir_ / "where.png";
+  const RunResult r = RunPirouette("locate --map " + Map() + " --world " + World("soccer_field") +
+                                   " --pose 0.75,0.65,30 --quiet --picture " + picture.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output();
+  EXPECT_NE(r.stderr_only.find("wrote " + picture.string()), std::string::npos) << r.stderr_only;
+  const std::string png = Slurp(picture);
+  ASSERT_GT(png.size(), 1000U);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+}
+
 TEST_F(LocateCliTest, BadInputIsRefusedWithExitTwo) {
   const std::string world = " --world " + World("soccer_field");
   const RunResult missing = RunPirouette("locate --map " + (dir_ / "nope" / "map.yaml").string() +

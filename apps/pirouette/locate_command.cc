@@ -6,6 +6,8 @@
 #include "apps/pirouette/parse.h"
 #include "pirouette/app/atomic_file.h"
 #include "pirouette/app/global_localization.h"
+#include "pirouette/app/image_io.h"
+#include "pirouette/app/locate_picture.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 
@@ -30,7 +32,7 @@ Command AddLocateCommand(CLI::App& parent) {
       "and the rates: found right (within one coarse cell, heading within 10 degrees), cannot "
       "tell, wrong.\n  example: pirouette explore --world worlds/soccer_field.yaml --out soccer "
       "&& pirouette locate --map soccer/map.yaml --world worlds/soccer_field.yaml --pose "
-      "0.75,0.65,30");
+      "0.75,0.65,30 --picture where.png");
   cmd->add_option("--map", request->map_path, "the saved map (map.yaml, as explore writes it)")
       ->required();
   cmd->add_option("--world", request->world_path,
@@ -60,8 +62,13 @@ Command AddLocateCommand(CLI::App& parent) {
                   "farther than every image column sees the floor")
       ->capture_default_str();
   cmd->add_option("--out", *out, "write the JSON report here (atomically)");
+  auto picture = std::make_shared<std::string>();
+  cmd->add_option("--picture", *picture,
+                  "write a PNG of the map with each pose's truth (green ring) and answer (blue: "
+                  "right, red: wrong, orange: cannot tell); with --pose, the pirouette's hits too "
+                  "(cyan), where the answer puts them");
   cmd->add_flag("--quiet", request->quiet, "no progress line");
-  return {cmd, [request, pose, pose_option, method, out] {
+  return {cmd, [request, pose, pose_option, method, out, picture] {
             const auto parsed = app::ParseMaskSource(*method);
             if (!parsed) {
               throw core::InputError("", 0, "--method",
@@ -101,6 +108,10 @@ Command AddLocateCommand(CLI::App& parent) {
             if (!out->empty()) {
               app::WriteFileAtomically(*out, app::LocateJson(*request, result).dump(2) + "\n");
               std::fprintf(stderr, "wrote %s\n", out->c_str());
+            }
+            if (!picture->empty()) {
+              app::WritePng(*picture, app::DrawLocatePicture(result));
+              std::fprintf(stderr, "wrote %s\n", picture->c_str());
             }
           }};
 }

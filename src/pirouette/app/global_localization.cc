@@ -410,7 +410,7 @@ LocateResult RunLocate(const LocateRequest& request) {
     throw core::InputError("", 0, "--pose", "give --pose X,Y,H or --random N (N >= 1)");
   }
   // Rays pass the map's pinholes (FillPinholes), here and in the table.
-  const mapping::TrinaryMap map = FillPinholes(ReadRosMap(request.map_path), kPinholeCells);
+  mapping::TrinaryMap map = FillPinholes(ReadRosMap(request.map_path), kPinholeCells);
   const sim::World world = sim::LoadWorldFile(request.world_path);
   LocateResult result;
   result.coarse_cell_m = CoarseCellSize(world);
@@ -466,6 +466,7 @@ LocateResult RunLocate(const LocateRequest& request) {
     const auto t0 = Clock::now();
     LocateTrial trial;
     trial.truth = truths[q];
+    trial.seen = seen;
     trial.answer = Locate(map, colours, table, seen.view, seen.kinds, result.spacing_m,
                           result.coarse_cell_m, request.options);
     locate_s += Seconds(Clock::now() - t0);
@@ -487,6 +488,7 @@ LocateResult RunLocate(const LocateRequest& request) {
     });
   }
   result.mean_locate_s = truths.empty() ? 0.0 : locate_s / truths.size();
+  result.map = std::move(map);
   return result;
 }
 

@@ -166,6 +166,7 @@ struct LocateRequest {
 // One query's outcome against the truth.
 struct LocateTrial {
   core::Pose2 truth;
+  ObservedPlace seen;  // the pirouette's view (robot frame)
   LocateAnswer answer;
   double position_error_m = 0.0;  // of the answer's best candidate
   double heading_error_deg = 0.0;
@@ -173,6 +174,8 @@ struct LocateTrial {
 };
 
 struct LocateResult {
+  // The map as the trials were compared with it (pinholes filled); RunLocate sets it.
+  std::optional<mapping::TrinaryMap> map;
   std::string table_path;
   bool table_loaded = false;
   std::string colours_path;  // the colour layer read; empty: none

@@ -7,8 +7,7 @@
 namespace pirouette::app {
 namespace {
 
-constexpr int kShift = 4;  // OpenCV's fractional bits for anti-aliased drawing
-constexpr double kOne = 1 << kShift;
+constexpr int kShift = MapCanvas::kShift;
 
 const cv::Scalar kPathColour(200, 90, 20);   // blue (BGR)
 const cv::Scalar kStopColour(0, 140, 255);   // orange
@@ -17,29 +16,47 @@ const cv::Scalar kRobotColour(30, 30, 220);  // red
 
 }  // namespace
 
+MapCanvas MapCanvas::Of(const core::GridGeometry& geometry,
+                        const std::function<std::uint8_t(const core::CellIndex&)>& grey,
+                        int target_width_px) {
+  MapCanvas canvas{{}, geometry, std::max(1, target_width_px / std::max(1, geometry.width()))};
+  cv::Mat3b cells(geometry.height(), geometry.width());
+  for (int y = 0; y < geometry.height(); ++y) {
+    for (int x = 0; x < geometry.width(); ++x) {
+      const std::uint8_t v = grey({x, y});
+      cells(geometry.height() - 1 - y, x) = cv::Vec3b(v, v, v);
+    }
+  }
+  cv::resize(cells, canvas.image, {}, canvas.scale, canvas.scale, cv::INTER_NEAREST);
+  return canvas;
+}
+
+cv::Point MapCanvas::Pixel(const Eigen::Vector2d& p_m) const {
+  const double u = (p_m.x() - geometry.origin().x()) / geometry.resolution() * scale;
+  const double v =
+      (geometry.height() - (p_m.y() - geometry.origin().y()) / geometry.resolution()) * scale;
+  return {static_cast<int>(std::lround(u * (1 << kShift))),
+          static_cast<int>(std::lround(v * (1 << kShift)))};
+}
+
+int MapCanvas::Fixed(double pixels) {
+  return static_cast<int>(std::lround(pixels * (1 << kShift)));
+}
+
 cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<core::Pose2>& path,
                          const std::vector<core::Pose2>& stops, int target_width_px) {
   const core::GridGeometry& g = grid.geometry();
-  const int scale = std::max(1, target_width_px / g.width());
-  cv::Mat3b cells(g.height(), g.width());
-  for (int y = 0; y < g.height(); ++y) {
-    for (int x = 0; x < g.width(); ++x) {
-      const core::CellIndex c{x, y};
-      std::uint8_t v = 160;  // unknown
-      if (grid.Known(c)) {
-        v = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - grid.Probability(c))));
-      }
-      cells(g.height() - 1 - y, x) = cv::Vec3b(v, v, v);
-    }
-  }
-  cv::Mat3b image;
-  cv::resize(cells, image, {}, scale, scale, cv::INTER_NEAREST);
-  const auto pixel = [&](const Eigen::Vector2d& p) {
-    const double u = (p.x() - g.origin().x()) / g.resolution() * scale;
-    const double v = (g.height() - (p.y() - g.origin().y()) / g.resolution()) * scale;
-    return cv::Point(static_cast<int>(std::lround(u * kOne)),
-                     static_cast<int>(std::lround(v * kOne)));
-  };
+  MapCanvas canvas = MapCanvas::Of(
+      g,
+      [&](const core::CellIndex& c) {
+        return grid.Known(c)
+                   ? static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - grid.Probability(c))))
+                   : std::uint8_t{160};  // unknown
+      },
+      target_width_px);
+  cv::Mat3b& image = canvas.image;
+  const int scale = canvas.scale;
+  const auto pixel = [&](const Eigen::Vector2d& p) { return canvas.Pixel(p); };
   const int thickness = std::max(1, scale / 2);
   for (std::size_t i = 1; i < path.size(); ++i) {
     cv::line(image, pixel(path[i - 1].translation()), pixel(path[i].translation()), kPathColour,
@@ -47,15 +64,15 @@ cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<c
   }
   const int dot = std::max(3, 2 * scale);
   for (const core::Pose2& stop : stops) {
-    cv::circle(image, pixel(stop.translation()), static_cast<int>(dot * kOne), kStopColour,
-               cv::FILLED, cv::LINE_AA, kShift);
+    cv::circle(image, pixel(stop.translation()), MapCanvas::Fixed(dot), kStopColour, cv::FILLED,
+               cv::LINE_AA, kShift);
   }
   if (!path.empty()) {
-    cv::circle(image, pixel(path.front().translation()), static_cast<int>((dot + 2) * kOne),
-               kStartColour, 2, cv::LINE_AA, kShift);
+    cv::circle(image, pixel(path.front().translation()), MapCanvas::Fixed(dot + 2), kStartColour, 2,
+               cv::LINE_AA, kShift);
     const core::Pose2& last = path.back();
     const double arrow_m = 3.0 * dot * g.resolution() / scale;
-    cv::circle(image, pixel(last.translation()), static_cast<int>((dot + 1) * kOne), kRobotColour,
+    cv::circle(image, pixel(last.translation()), MapCanvas::Fixed(dot + 1), kRobotColour,
                cv::FILLED, cv::LINE_AA, kShift);
     cv::line(image, pixel(last.translation()),
              pixel(last.translation() + arrow_m * last.Direction()), kRobotColour, thickness + 1,

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -7,6 +9,28 @@
 #include "pirouette/mapping/occupancy_grid.h"
 
 namespace pirouette::app {
+
+// A map grid drawn as a picture, north up, `scale` whole pixels a cell, and
+// where the map's points fall on it: the ground that DrawMapPicture and
+// DrawLocatePicture draw on.
+struct MapCanvas {
+  // Fractional bits of the points Pixel gives OpenCV's drawing functions.
+  static constexpr int kShift = 4;
+
+  cv::Mat3b image;
+  core::GridGeometry geometry;
+  int scale = 1;
+
+  // Cells of `geometry` in the grey levels `grey` gives them, at
+  // max(1, target_width_px / width) pixels a cell.
+  static MapCanvas Of(const core::GridGeometry& geometry,
+                      const std::function<std::uint8_t(const core::CellIndex&)>& grey,
+                      int target_width_px);
+  // Where a point of the map (metres) falls, in kShift fixed point.
+  cv::Point Pixel(const Eigen::Vector2d& p_m) const;
+  // `pixels` in kShift fixed point (a radius for cv::circle).
+  static int Fixed(double pixels);
+};
 
 // The picture of a run a person looks at (SPEC.md's map.png): the map in
 // grey levels by occupancy probability (white free, black occupied, the
