@@ -1,9 +1,10 @@
 // Pose tracking in whole explorations of the default world (Explore with
 // LocalizeKind::kScan). What it asserts is what the tracker measurably does
 // (README, "Localization"): it costs little where there is nothing to
-// correct, and it takes out much of the heading error 5% turn noise makes.
-// The goal bounds under noise (complete, false_free <= 0.01, wall
-// error within 1.5x the noise-free figure) are not met, so not asserted.
+// correct, and it takes out most of the pose error 5% odometry noise makes,
+// and most of the false free cells with it. The goal bounds under
+// noise (complete, false_free <= 0.01, wall error within 1.5x the
+// noise-free figure) are not met in every world, so not asserted.
 
 #include <gtest/gtest.h>
 
@@ -40,14 +41,21 @@ TEST(LocalizationLoopTest, TrackingWithoutOdometryNoiseKeepsTheMapTrue) {
   EXPECT_GT(result.corrections, 0);
 }
 
-TEST(LocalizationLoopTest, TrackingTakesOutMuchOfTheHeadingErrorOfNoisyTurns) {
+TEST(LocalizationLoopTest, TrackingTakesOutMostOfThePoseErrorOfNoisyOdometry) {
   const sim::World world = sim::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
   const ExplorationResult none = ExploreWith(world, LocalizeKind::kNone, 0.05);
   const ExplorationResult scan = ExploreWith(world, LocalizeKind::kScan, 0.05);
   ASSERT_TRUE(none.pose_error.has_value());
   ASSERT_TRUE(scan.pose_error.has_value());
   EXPECT_LT(scan.pose_error->mean_deg, 0.6 * none.pose_error->mean_deg);
-  EXPECT_LT(scan.pose_error->mean_m, none.pose_error->mean_m);
+  // The scan match between stops takes out the straight moves' error.
+  EXPECT_LT(scan.pose_error->mean_m, 0.5 * none.pose_error->mean_m);
+  EXPECT_GT(scan.scan_matches, 0);
+  EXPECT_EQ(scan.status, "complete");
+  const MapEvaluation none_eval = EvaluateMap(none.grid.ToTrinary(), world);
+  const MapEvaluation scan_eval = EvaluateMap(scan.grid.ToTrinary(), world);
+  EXPECT_LE(scan_eval.false_free, 0.03);
+  EXPECT_LT(scan_eval.false_free, 0.25 * none_eval.false_free);
   // Without tracking nothing is matched.
   EXPECT_EQ(none.matches, 0);
 }

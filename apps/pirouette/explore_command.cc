@@ -46,13 +46,13 @@ Command AddExploreCommand(CLI::App& parent) {
   cmd->add_option("--method", *method, "floor segmentation: default or paper")
       ->check(CLI::IsMember({"default", "paper"}))
       ->capture_default_str();
-  cmd->add_option(
-         "--localize", *localize,
-         "none: trust the odometry; scan: correct each frame's heading by matching "
-         "what the camera sees against the earlier frames of the stop and the map made "
-         "before it, turning in steps of a pirouette's with a look after each (cuts heading "
-         "error and false free cells under wheel slip, costs a little without it: see "
-         "the README's localization figures)")
+  cmd->add_option("--localize", *localize,
+                  "none: trust the odometry; scan: correct each frame's heading by matching "
+                  "what the camera sees against the earlier frames of the stop and the map made "
+                  "before it, turning in steps of a pirouette's with a look after each, and each "
+                  "whole pirouette's position and heading by scan matching its hits against those "
+                  "of the stops before (cuts pose error and false free cells under wheel slip, "
+                  "costs a little without it: see the README's localization figures)")
       ->check(CLI::IsMember({"scan", "none"}))
       ->capture_default_str();
   cmd->add_option("--cell", request->options.cell_m,

@@ -83,6 +83,7 @@ class Explorer {
     if (mapper_.tracker()) {
       result_.corrections = mapper_.tracker()->accepted();
       result_.matches = mapper_.tracker()->matches();
+      result_.scan_matches = mapper_.tracker()->scan_matches();
     }
     result_.colour_sightings = mapper_.ColourSightings();
     result_.grid = mapper_.TakeGrid();

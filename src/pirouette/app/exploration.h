@@ -133,8 +133,9 @@ struct ExplorationResult {
   // Where the robot believed each frame was taken when it took it (the
   // tracker may move a stop's earlier frames later, in the map only).
   std::vector<core::Pose2> frame_poses;
-  int matches = 0;      // frames the tracker saw
-  int corrections = 0;  // of them, those turned by a match with their stop's earlier frames
+  int matches = 0;       // frames the tracker saw
+  int corrections = 0;   // of them, those turned by a match with their stop's earlier frames
+  int scan_matches = 0;  // stops moved by a scan match against the stops before
   StageTimes times;
 };
 

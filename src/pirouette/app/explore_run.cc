@@ -60,6 +60,7 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
     run["localization"] = {
         {"frames_matched", result.matches},
         {"frames_corrected", result.corrections},
+        {"stops_scan_matched", result.scan_matches},
         {"time_per_matched_frame_s",
          result.matches > 0 ? Round(result.times.localize_s / result.matches, 1e-6) : 0.0}};
   }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "pirouette/core/angle.h"
@@ -17,6 +19,17 @@ void TrackerOptions::Check() const {
         "view_range_factor >= 1, map_turn_range_factor in [1, view_range_factor]");
   }
   heading.Check();
+  scan.Check();
+  if (!(hit_range_factor >= 1.0) || !(translation_fraction >= 0.0) || !(heading_prior_rad > 0.0)) {
+    throw std::invalid_argument(
+        "TrackerOptions: hit_range_factor must be >= 1, translation_fraction >= 0, "
+        "heading_prior_rad > 0");
+  }
+}
+
+PoseTracker::PoseTracker(const TrackerOptions& options)
+    : options_(options), hits_(options.scan.cell_m) {
+  options_.Check();
 }
 
 bool PoseTracker::StartsStop(const core::Pose2& odom_T_robot) const {
@@ -51,9 +64,15 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
       starts ? 0.0
              : std::abs(core::NormalizeAngle(odom_T_robot.heading() - stop_.back().odom.heading()));
   if (starts) {
+    AddStopHits();
+    if (!stop_.empty()) {  // the first stop moved from nowhere
+      const Eigen::Vector2d moved = predicted.translation() - stop_position_;
+      position_variance_ += std::pow(options_.translation_fraction * moved.norm(), 2);
+    }
     stop_.clear();
     stop_position_ = predicted.translation();
   }
+  map_range_m_ = map_range_m;
   // The map turn's range: map_turn_range_factor times the map's, or as far
   // as the profile was read if that is less (never less than the map's).
   const double turn_range_m = std::max(
@@ -94,12 +113,57 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
     for (StopFrame& f : stop_) f.heading_rad += turn.offset_rad;
   }
 
+  if (options_.scan_match_frames > 0 && stop_.size() == options_.scan_match_frames) MatchStop();
+
   std::vector<core::Pose2> poses;
   for (const StopFrame& f : stop_) {
     poses.emplace_back(stop_position_.x(), stop_position_.y(), f.heading_rad);
   }
   map_T_odom_ = poses.back() * odom_T_robot.Inverse();
   return poses;
+}
+
+std::vector<Eigen::Vector2d> PoseTracker::StopHits() const {
+  // The nearest hit in each degree of bearing around the stop: the frames
+  // overlap, and a bearing's nearest hit is the one the others hide behind.
+  constexpr int kBins = 360;
+  std::vector<Eigen::Vector2d> nearest(kBins, Eigen::Vector2d::Zero());
+  std::vector<double> range(kBins, std::numeric_limits<double>::infinity());
+  const double max_range_m = options_.hit_range_factor * map_range_m_;
+  for (const StopFrame& f : stop_) {
+    for (const core::RangeReading& r : f.profile.readings) {
+      if (r.kind != core::ReadingKind::kHit || r.range_m > max_range_m) continue;
+      const double bearing = core::NormalizeAngle(f.heading_rad + r.bearing_rad);
+      const int bin = std::clamp(static_cast<int>(std::floor((bearing + std::numbers::pi) /
+                                                             (2.0 * std::numbers::pi) * kBins)),
+                                 0, kBins - 1);
+      if (r.range_m < range[bin]) {
+        range[bin] = r.range_m;
+        nearest[bin] = r.range_m * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+      }
+    }
+  }
+  std::vector<Eigen::Vector2d> out;
+  for (int b = 0; b < kBins; ++b) {
+    if (std::isfinite(range[b])) out.push_back(nearest[b]);
+  }
+  return out;
+}
+
+void PoseTracker::AddStopHits() {
+  for (const Eigen::Vector2d& q : StopHits()) hits_.Add(stop_position_ + q);
+}
+
+void PoseTracker::MatchStop() {
+  Eigen::Matrix3d prior = Eigen::Matrix3d::Zero();
+  prior(0, 0) = prior(1, 1) = std::max(position_variance_, std::pow(options_.scan.cell_m, 2));
+  prior(2, 2) = std::pow(options_.heading_prior_rad, 2);
+  const ScanMatch match = MatchScan(hits_, stop_position_, StopHits(), prior, options_.scan);
+  if (!match.accepted) return;
+  ++scan_matches_;
+  stop_position_ += match.offset.head<2>();
+  for (StopFrame& f : stop_) f.heading_rad += match.offset.z();
+  position_variance_ = std::max(0.5 * (match.covariance(0, 0) + match.covariance(1, 1)), 0.0);
 }
 
 }  // namespace pirouette::localize

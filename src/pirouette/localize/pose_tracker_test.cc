@@ -37,11 +37,12 @@ core::ObstacleProfile ReadTo(core::ObstacleProfile profile, double max_range_m) 
 // map before the stop at the poses the tracker gives. `odometry` maps the
 // true poses to what the wheels say. Returns the largest heading error
 // (degrees) and position error (metres) over the frames, as each was
-// tracked; *final_deg, if given, is the last frame's heading error at the end.
+// tracked; *final_deg and *final_m, if given, are the last frame's errors
+// at the end.
 std::pair<double, double> Track(const std::vector<core::Pose2>& truth,
                                 const std::vector<core::Pose2>& odometry, double view_range_m = 1.2,
                                 double map_range_m = 1.2, const TrackerOptions& options = {},
-                                double* final_deg = nullptr) {
+                                double* final_deg = nullptr, double* final_m = nullptr) {
   PoseTracker tracker(options);
   mapping::OccupancyGrid grid = EmptyGrid();
   mapping::OccupancyGrid before = grid;
@@ -64,6 +65,7 @@ std::pair<double, double> Track(const std::vector<core::Pose2>& truth,
     worst_deg = std::max(worst_deg, deg);
     worst_m = std::max(worst_m, (poses.back().translation() - truth[i].translation()).norm());
     if (final_deg != nullptr) *final_deg = deg;
+    if (final_m != nullptr) *final_m = (poses.back().translation() - truth[i].translation()).norm();
   }
   return {worst_deg, worst_m};
 }
@@ -135,6 +137,7 @@ TEST(PoseTrackerTest, TheMapTurnReadsTheWallsBeyondTheMapsRange) {
   TrackerOptions far;
   far.heading.prior_weight = 1.0;
   far.map_turn_steps = 6.0;
+  far.scan_match_frames = 0;  // the map turn alone (the scan match would fix it too)
   TrackerOptions near = far;
   near.map_turn_range_factor = 1.0;
   double near_deg = 0.0;
@@ -147,8 +150,7 @@ TEST(PoseTrackerTest, TheMapTurnReadsTheWallsBeyondTheMapsRange) {
 
 // What the tracker can do in a plain room: most of a turn error that grows
 // with every turn is taken out (the frames of a pirouette overlap), and so
-// the drive between two pirouettes goes less astray; the drive's own error
-// is not corrected (see PoseTracker).
+// the drive between two pirouettes goes less astray.
 TEST(PoseTrackerTest, CorrectsTurnErrors) {
   const std::vector<core::Pose2> truth = TwoPirouettes();
   // Every 30° turn reads 4% long, and the drive between the stops 6% short.
@@ -181,6 +183,31 @@ TEST(PoseTrackerTest, CorrectsTurnErrors) {
   EXPECT_LT(m, 0.7 * odometry_m);
 }
 
+// A drive that reads 10% short (4 cm of 40): the second pirouette, once
+// whole, is matched against the first's hits and moved to where it is; with
+// the scan match off (scan_match_frames 0) it keeps the odometry's error.
+TEST(PoseTrackerTest, TheScanMatchCorrectsTheDrive) {
+  const std::vector<core::Pose2> truth = TwoPirouettes();
+  std::vector<core::Pose2> odometry;
+  const Eigen::Vector2d first = truth.front().translation();
+  for (const core::Pose2& t : truth) {
+    const Eigen::Vector2d at = first + 0.9 * (t.translation() - first);
+    odometry.emplace_back(at.x(), at.y(), t.heading());
+  }
+  const double odometry_m = (odometry.back().translation() - truth.back().translation()).norm();
+  ASSERT_GT(odometry_m, 0.035);
+  TrackerOptions off;
+  off.scan_match_frames = 0;
+  double off_m = 0.0;
+  double on_m = 0.0;
+  double on_deg = 0.0;
+  Track(truth, odometry, 1.2, 1.2, off, nullptr, &off_m);
+  Track(truth, odometry, 1.2, 1.2, TrackerOptions{}, &on_deg, &on_m);
+  EXPECT_GT(off_m, 0.9 * odometry_m);
+  EXPECT_LT(on_m, 0.01);
+  EXPECT_LT(on_deg, 0.5);
+}
+
 TEST(PoseTrackerTest, RefusesBadOptions) {
   TrackerOptions shorter;
   shorter.view_range_factor = 0.5;  // the view must reach at least the map's range
@@ -194,6 +221,12 @@ TEST(PoseTrackerTest, RefusesBadOptions) {
   TrackerOptions map_turn_short;
   map_turn_short.map_turn_range_factor = 0.9;
   EXPECT_THROW(PoseTracker{map_turn_short}, std::invalid_argument);
+  TrackerOptions hits_short;
+  hits_short.hit_range_factor = 0.5;
+  EXPECT_THROW(PoseTracker{hits_short}, std::invalid_argument);
+  TrackerOptions bad_scan;
+  bad_scan.scan.sigma_m = -1.0;
+  EXPECT_THROW(PoseTracker{bad_scan}, std::invalid_argument);
   EXPECT_NO_THROW(PoseTracker{TrackerOptions{}});
 }
 
