@@ -6,14 +6,14 @@
 #include <string>
 
 #include "pirouette/camera/camera_model.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/sim/world.h"
-#include "pirouette/sim/world_file.h"
 
 namespace pirouette::bench {
 
 inline const sim::World& SoccerField() {
   static const sim::World world =
-      sim::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
+      io::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
   return world;
 }
 

@@ -41,11 +41,11 @@
 #include <vector>
 
 #include "bench_worlds.h"
-#include "pirouette/app/image_io.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/obstacle_profile.h"
+#include "pirouette/io/image_io.h"
 #include "pirouette/sim/renderer.h"
 #include "pirouette/vision/floor_segmenter.h"
 #include "pirouette/vision/profile_extractor.h"
@@ -68,7 +68,7 @@ const std::vector<cv::Mat3b>& Frames(int width, int height) {
         world, pirouette::bench::Scaled(world.robot().camera, width, height), {});
     for (int i = 0; i < kViews; ++i) {
       const Pose2 pose(0.75, 0.65, pirouette::core::DegToRad(30.0 * i));
-      it->second.emplace_back(pirouette::app::ToBgrMat(renderer.Render(pose)));
+      it->second.emplace_back(pirouette::io::ToBgrMat(renderer.Render(pose)));
     }
   }
   return it->second;

@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "pirouette/app/image_io.h"
-#include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/core/angle.h"
+#include "pirouette/io/camera_file.h"
+#include "pirouette/io/image_io.h"
 #include "pirouette/sim/renderer.h"
 #include "pirouette/sim/scene_mesh.h"
 #include "pirouette/sim/world.h"
@@ -139,7 +139,7 @@ class CalibrateCliTest : public ::testing::Test {
   std::string Path(const std::string& name) const { return (dir_ / name).string(); }
 
   void WriteCamera(const std::string& path, const CameraModel& cam) const {
-    std::ofstream(path) << camera::CameraFileText(cam);
+    std::ofstream(path) << pirouette::io::CameraFileText(cam);
   }
 
   fs::path dir_;
@@ -180,8 +180,8 @@ TEST_F(CalibrateCliTest, IntrinsicsFromRenderedBoardsWithinOnePercent) {
       options.seed = 100 + i;
       options.roll_rad = roll;
       sim::Renderer renderer(world, cam, options);
-      pirouette::app::WritePng(Path("views/view" + std::to_string(i) + ".png"),
-                               renderer.Render(pose));
+      pirouette::io::WritePng(Path("views/view" + std::to_string(i) + ".png"),
+                              renderer.Render(pose));
       placed = true;
       ++rendered;
     }
@@ -211,7 +211,7 @@ TEST_F(CalibrateCliTest, IntrinsicsFromRenderedBoardsWithinOnePercent) {
       Number(json, "cy") - 119.5, Number(json, "reprojection_error_px"));
 
   // The camera file holds what was printed, and a placeholder mount.
-  const CameraModel written = camera::LoadCameraFile(Path("camera.yaml"));
+  const CameraModel written = pirouette::io::LoadCameraFile(Path("camera.yaml"));
   EXPECT_EQ(written.width(), 320);
   EXPECT_EQ(written.height(), 240);
   EXPECT_NEAR(written.intrinsics().fx, Number(json, "fx"), 1e-3);
@@ -240,7 +240,7 @@ TEST_F(CalibrateCliTest, VignettingFromARenderedFlatFloor) {
   const CameraModel truth = TruthCamera({0.30, DegToRad(70.0), 0.03});
   const sim::World world = FloorWorld({}, {170, 160, 140});
   sim::Renderer renderer(world, truth, sim::RenderOptions{});
-  pirouette::app::WritePng(Path("flat.png"), renderer.Render(Pose2(4.0, 4.0, 0.3)));
+  pirouette::io::WritePng(Path("flat.png"), renderer.Render(Pose2(4.0, 4.0, 0.3)));
   const CameraModel without(truth.name(), truth.width(), truth.height(), truth.intrinsics(),
                             truth.distortion(), truth.mount(), camera::Vignetting{});
   WriteCamera(Path("camera.yaml"), without);
@@ -248,7 +248,7 @@ TEST_F(CalibrateCliTest, VignettingFromARenderedFlatFloor) {
   const Result r = RunPirouette("calibrate vignetting --image " + Path("flat.png") + " --camera " +
                                 Path("camera.yaml"));
   ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
-  const CameraModel fitted = camera::LoadCameraFile(Path("camera.yaml"));
+  const CameraModel fitted = pirouette::io::LoadCameraFile(Path("camera.yaml"));
   double worst = 0.0;
   for (std::size_t c = 0; c < 3; ++c) {
     const double error = fitted.vignetting().k[c] - truth.vignetting().k[c];
@@ -283,7 +283,7 @@ TEST_F(CalibrateCliTest, MountFromOneRenderedBoardOnTheFloor) {
         Board(centre, c.cols, c.rows, c.square, pose.heading() + DegToRad(90.0));
     ASSERT_TRUE(WellInView(board, truth, pose, 2.0, 4.0));
     sim::Renderer renderer(FloorWorld({board}, {110, 105, 100}), truth, sim::RenderOptions{});
-    pirouette::app::WritePng(Path("board.png"), renderer.Render(pose));
+    pirouette::io::WritePng(Path("board.png"), renderer.Render(pose));
     WriteCamera(Path("camera.yaml"), TruthCamera({0.5, 0.1, 0.0}));  // a wrong mount
 
     const Result r = RunPirouette("calibrate mount --image " + Path("board.png") + " --board " +
@@ -291,7 +291,7 @@ TEST_F(CalibrateCliTest, MountFromOneRenderedBoardOnTheFloor) {
                                   " --square " + std::to_string(c.square) + " --board-distance " +
                                   std::to_string(c.distance) + " --camera " + Path("camera.yaml"));
     ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
-    const camera::Mount fitted = camera::LoadCameraFile(Path("camera.yaml")).mount();
+    const camera::Mount fitted = pirouette::io::LoadCameraFile(Path("camera.yaml")).mount();
     // The board is drawn sim::kChessboardLift above the floor.
     const double height_error = fitted.height_m - (c.mount.height_m - sim::kChessboardLift);
     const double tilt_error = RadToDeg(fitted.tilt_rad - c.mount.tilt_rad);

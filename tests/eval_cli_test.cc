@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "pirouette/app/map_file.h"
+#include "pirouette/io/map_file.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/mapping/trinary_map.h"
-#include "pirouette/sim/world_file.h"
 #include "run_pirouette.h"
 
 namespace {
@@ -46,7 +46,7 @@ class EvalCliTest : public ::testing::Test {
   // Writes the soccer field's true map, on a 2 cm grid a cell larger than the
   // floor on every side, to DIR/map.yaml.
   std::string WritePerfectMap() const {
-    const pirouette::sim::World world = pirouette::sim::LoadWorldFile(World("soccer_field.yaml"));
+    const pirouette::sim::World world = pirouette::io::LoadWorldFile(World("soccer_field.yaml"));
     pirouette::mapping::TrinaryMap map{
         pirouette::core::GridGeometry::Covering(0.02, {-0.02, -0.02},
                                                 world.floor().size + Eigen::Vector2d(0.04, 0.04)),
@@ -55,7 +55,7 @@ class EvalCliTest : public ::testing::Test {
       const Eigen::Vector2d c = map.geometry.CellCentre(map.geometry.Unflat(i));
       map.cells.push_back(world.IsOccupied(c) ? CellState::kOccupied : CellState::kFree);
     }
-    pirouette::app::WriteRosMap(map, Path("map.yaml"));
+    pirouette::io::WriteRosMap(map, Path("map.yaml"));
     return Path("map.yaml");
   }
 

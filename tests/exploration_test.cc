@@ -10,7 +10,7 @@
 
 #include "pirouette/app/exploration.h"
 #include "pirouette/app/map_evaluation.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/io/world_file.h"
 
 namespace pirouette::app {
 namespace {
@@ -20,7 +20,7 @@ std::string WorldPath(const std::string& name) {
 }
 
 void ExpectExploredWithinBounds(const std::string& name, PlannerKind planner) {
-  const sim::World world = sim::LoadWorldFile(WorldPath(name));
+  const sim::World world = io::LoadWorldFile(WorldPath(name));
   ExplorationOptions options;
   options.seed = 1;
   options.planner = planner;
@@ -50,7 +50,7 @@ TEST(ExplorationTest, FrontierBaselineMapsTheSoccerField) {
 }
 
 TEST(ExplorationTest, ReturnHomeEndsWhereItStarted) {
-  const sim::World world = sim::LoadWorldFile(WorldPath("two_rooms"));
+  const sim::World world = io::LoadWorldFile(WorldPath("two_rooms"));
   ExplorationOptions options;
   options.return_home = true;
   const ExplorationResult result = Explore(world, options);
@@ -62,7 +62,7 @@ TEST(ExplorationTest, ReturnHomeEndsWhereItStarted) {
 }
 
 TEST(ExplorationTest, SameWorldAndSeedGiveTheSameMap) {
-  const sim::World world = sim::LoadWorldFile(WorldPath("soccer_field"));
+  const sim::World world = io::LoadWorldFile(WorldPath("soccer_field"));
   ExplorationOptions options;
   options.seed = 3;
   options.max_steps = 15;
@@ -77,7 +77,7 @@ TEST(ExplorationTest, SameWorldAndSeedGiveTheSameMap) {
 }
 
 TEST(ExplorationTest, StepLimitStopsTheRun) {
-  const sim::World world = sim::LoadWorldFile(WorldPath("soccer_field"));
+  const sim::World world = io::LoadWorldFile(WorldPath("soccer_field"));
   ExplorationOptions options;
   options.max_steps = 3;
   const ExplorationResult result = Explore(world, options);
@@ -86,7 +86,7 @@ TEST(ExplorationTest, StepLimitStopsTheRun) {
 }
 
 TEST(ExplorationTest, AStopRequestEndsTheRunWithTheMapSoFar) {
-  const sim::World world = sim::LoadWorldFile(WorldPath("soccer_field"));
+  const sim::World world = io::LoadWorldFile(WorldPath("soccer_field"));
   const std::atomic<bool> stop{true};
   ExplorationOptions options;
   options.stop_requested = &stop;

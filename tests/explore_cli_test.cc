@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "pirouette/app/colour_map_file.h"
-#include "pirouette/app/map_file.h"
+#include "pirouette/io/colour_map_file.h"
+#include "pirouette/io/map_file.h"
 #include "run_pirouette.h"
 
 namespace pirouette::testing {
@@ -60,13 +60,13 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
   EXPECT_EQ(Slurp(out / "map.pgm").substr(0, 2), "P5");
   // The colour layer lies on the map's cells, and the walls and blocks seen
   // have colours there.
-  const mapping::TrinaryMap map = app::ReadRosMap((out / "map.yaml").string());
+  const mapping::TrinaryMap map = io::ReadRosMap((out / "map.yaml").string());
   const localize::ColourMap colours =
-      app::ReadColourMap((out / "map_colours.png").string(), map.geometry);
+      io::ReadColourMap((out / "map_colours.png").string(), map.geometry);
   int coloured_walls = 0;
   for (std::size_t i = 0; i < map.cells.size(); ++i) {
     coloured_walls += map.cells[i] == mapping::CellState::kOccupied &&
-                      colours.cells()[i] != localize::ColourClass::kNone;
+                      colours.cells()[i] != core::ColourClass::kNone;
   }
   EXPECT_GT(coloured_walls, 10);
   // The map it wrote evaluates to what run.json says.

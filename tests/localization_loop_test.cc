@@ -12,7 +12,7 @@
 
 #include "pirouette/app/exploration.h"
 #include "pirouette/app/map_evaluation.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/io/world_file.h"
 
 namespace pirouette::app {
 namespace {
@@ -22,12 +22,12 @@ ExplorationResult ExploreWith(const sim::World& world, LocalizeKind localize, do
   ExplorationOptions options;
   options.seed = seed;
   options.localize = localize;
-  options.odometry_noise = sim::OdometryNoise{noise, noise};
+  options.odometry_noise = core::OdometryNoise{noise, noise};
   return Explore(world, options);
 }
 
 TEST(LocalizationLoopTest, TrackingWithoutOdometryNoiseKeepsTheMapTrue) {
-  const sim::World world = sim::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
+  const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
   const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.0);
   EXPECT_EQ(result.status, "complete");
   const MapEvaluation eval = EvaluateMap(result.grid.ToTrinary(), world);
@@ -42,7 +42,7 @@ TEST(LocalizationLoopTest, TrackingWithoutOdometryNoiseKeepsTheMapTrue) {
 }
 
 TEST(LocalizationLoopTest, TrackingTakesOutMostOfThePoseErrorOfNoisyOdometry) {
-  const sim::World world = sim::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
+  const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
   const ExplorationResult none = ExploreWith(world, LocalizeKind::kNone, 0.05);
   const ExplorationResult scan = ExploreWith(world, LocalizeKind::kScan, 0.05);
   ASSERT_TRUE(none.pose_error.has_value());
@@ -66,7 +66,7 @@ TEST(LocalizationLoopTest, TrackingTakesOutMostOfThePoseErrorOfNoisyOdometry) {
 // such moves in a row; now the explorer backs off such a contact, and the
 // run completes.
 TEST(LocalizationLoopTest, ARobotStuckAgainstAWallBacksOffAndGoesOn) {
-  const sim::World world = sim::LoadWorldFile(PIROUETTE_WORLDS_DIR "/maze.yaml");
+  const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/maze.yaml");
   const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.05, 3);
   EXPECT_EQ(result.status, "complete") << result.reason;
   EXPECT_GT(result.contact_backoffs, 0);

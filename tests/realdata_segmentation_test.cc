@@ -23,7 +23,7 @@ double MeanIou(vision::SegmentationMethod method, int first, int last) {
   return app::EvaluateSegmentation(request).mean_iou;
 }
 
-class RealdataSegmentationTest : public testing::Test {
+class RealdataSegmentationTest : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!std::filesystem::is_directory(kVisarDir)) {

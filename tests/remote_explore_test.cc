@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "pirouette/app/explore_run.h"
-#include "pirouette/robot/fake_robot.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
+#include "pirouette/testing/fake_robot.h"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
 
@@ -132,7 +132,7 @@ class Serving {
 };
 
 // A fake robot that stops answering after a number of frames, until released.
-class HangingRobot : public robot::FakeRobot {
+class HangingRobot : public testing::FakeRobot {
  public:
   HangingRobot(int width, int height, int frames_before_hang)
       : FakeRobot(width, height), left_(frames_before_hang) {}
@@ -191,7 +191,7 @@ TEST_F(RemoteExploreTest, RobotThatStopsAnsweringEndsTheRunStuckWithTheMapSoFar)
 }
 
 TEST_F(RemoteExploreTest, RobotThatRefusesACommandEndsTheRunStuck) {
-  robot::FakeRobot robot(320, 240);
+  testing::FakeRobot robot(320, 240);
   robot.fail_capture = true;
   Serving serving(robot);
 
@@ -211,7 +211,7 @@ TEST_F(RemoteExploreTest, RobotThatRefusesACommandEndsTheRunStuck) {
 // A robot whose frames are not the camera file's size answers garbage for
 // this run: the run ends "stuck" saying so, before any frame is mapped.
 TEST_F(RemoteExploreTest, FramesOfAnotherSizeThanTheCameraEndTheRunStuck) {
-  robot::FakeRobot robot(640, 480);
+  testing::FakeRobot robot(640, 480);
   Serving serving(robot);
 
   ExploreRequest request;

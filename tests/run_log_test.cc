@@ -12,7 +12,7 @@
 
 #include "pirouette/app/explore_run.h"
 #include "pirouette/app/log_mapping.h"
-#include "pirouette/app/run_log.h"
+#include "pirouette/io/run_log.h"
 
 namespace pirouette::app {
 namespace {
@@ -46,12 +46,12 @@ TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
   const ExploreReport explored = RunExplore(explore);
   ASSERT_EQ(explored.result.status, "complete") << explored.result.reason;
 
-  const RunLog log = ReadRunLog(explore.record_dir);
+  const io::RunLog log = io::ReadRunLog(explore.record_dir);
   EXPECT_EQ(static_cast<int>(log.rows.size()), explored.result.frames);
   EXPECT_EQ(log.info.world, explore.world_path);
   EXPECT_DOUBLE_EQ(log.info.radius_m, 0.04);
   int blocked = 0;
-  for (const RunLogRow& row : log.rows) blocked += row.blocked_leg_m ? 1 : 0;
+  for (const io::RunLogRow& row : log.rows) blocked += row.blocked_leg_m ? 1 : 0;
   EXPECT_LE(blocked, explored.result.blocked_looks);
 
   MapLogRequest map;
@@ -87,7 +87,7 @@ TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
   explore.odometry_noise = std::array<double, 2>{0.05, 0.05};
   const ExploreReport explored = RunExplore(explore);
   EXPECT_EQ(explored.run["localize"], "scan");
-  EXPECT_EQ(ReadRunLog(explore.record_dir).info.localize, "scan");
+  EXPECT_EQ(io::ReadRunLog(explore.record_dir).info.localize, "scan");
 
   MapLogRequest map;
   map.log_dir = explore.record_dir;

@@ -10,7 +10,7 @@
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
 #include "pirouette/app/live_capture.h"
-#include "pirouette/app/progress_line.h"
+#include "pirouette/run/progress_line.h"
 
 namespace pirouette::cli {
 namespace {
@@ -84,7 +84,7 @@ Command AddCaptureCommand(CLI::App& parent) {
             request->stop_requested = StopOnInterrupt();
             app::LiveCaptureResult result;
             {
-              app::ProgressLine progress(*quiet);
+              run::ProgressLine progress(*quiet);
               const auto start = std::chrono::steady_clock::now();
               result = app::RunLiveCapture(*request, [&](const app::LiveCaptureProgress& p) {
                 if (p.last == nullptr) return;

@@ -4,8 +4,8 @@
 
 #include "apps/pirouette/command.h"
 #include "pirouette/app/map_evaluation.h"
-#include "pirouette/app/map_file.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/io/map_file.h"
+#include "pirouette/io/world_file.h"
 
 namespace pirouette::cli {
 
@@ -22,8 +22,8 @@ Command AddEvalCommand(CLI::App& parent) {
   cmd->add_option("--world", *world_path, "world file (pirouette-world/1 YAML)")->required();
   cmd->add_option("--map", *map_path, "map file (map_server YAML, e.g. out/map.yaml)")->required();
   return {cmd, [world_path, map_path] {
-            const sim::World world = sim::LoadWorldFile(*world_path);
-            const mapping::TrinaryMap map = app::ReadRosMap(*map_path);
+            const sim::World world = io::LoadWorldFile(*world_path);
+            const mapping::TrinaryMap map = io::ReadRosMap(*map_path);
             const std::string json = app::MapEvaluationJson(app::EvaluateMap(map, world));
             std::fputs(json.c_str(), stdout);
           }};

@@ -4,12 +4,12 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/parse.h"
-#include "pirouette/app/atomic_file.h"
 #include "pirouette/app/global_localization.h"
-#include "pirouette/app/image_io.h"
 #include "pirouette/app/locate_picture.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/atomic_file.h"
+#include "pirouette/io/image_io.h"
 
 namespace pirouette::cli {
 
@@ -106,11 +106,11 @@ Command AddLocateCommand(CLI::App& parent) {
                   100.0 * result.wrong / n, result.wrong, result.mean_locate_s);
             }
             if (!out->empty()) {
-              app::WriteFileAtomically(*out, app::LocateJson(*request, result).dump(2) + "\n");
+              io::WriteFileAtomically(*out, app::LocateJson(*request, result).dump(2) + "\n");
               std::fprintf(stderr, "wrote %s\n", out->c_str());
             }
             if (!picture->empty()) {
-              app::WritePng(*picture, app::DrawLocatePicture(result));
+              io::WritePng(*picture, app::DrawLocatePicture(result));
               std::fprintf(stderr, "wrote %s\n", picture->c_str());
             }
           }};

@@ -4,9 +4,9 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/atomic_file.h"
 #include "pirouette/app/place_recognition.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/atomic_file.h"
 
 namespace pirouette::cli {
 
@@ -85,7 +85,7 @@ Command AddPlacesCommand(CLI::App& parent) {
             std::printf("informative queries (>= %d of 360 bearings hit something): %d of %d\n",
                         app::kInformativeBins, result.informative_queries, result.queries);
             if (!out->empty()) {
-              app::WriteFileAtomically(*out, app::PlacesJson(*request, result).dump(2) + "\n");
+              io::WriteFileAtomically(*out, app::PlacesJson(*request, result).dump(2) + "\n");
               std::fprintf(stderr, "wrote %s\n", out->c_str());
             }
           }};

@@ -9,11 +9,11 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
-#include "pirouette/app/atomic_file.h"
-#include "pirouette/app/simulated_robot.h"
+#include "pirouette/io/atomic_file.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/sim/simulated_robot.h"
 
 namespace pirouette::cli {
 namespace {
@@ -29,17 +29,17 @@ struct SimServeRequest {
 };
 
 // The simulated robot exactly as the in-process explorer builds it
-// (app::SimulatedRobot), so that a run through sim-serve sees the same frames
+// (sim::SimulatedRobot), so that a run through sim-serve sees the same frames
 // and the same motion as one in-process with the same world and seed.
 void Serve(const SimServeRequest& request) {
-  const sim::World world = sim::LoadWorldFile(request.world_path);
+  const sim::World world = io::LoadWorldFile(request.world_path);
   const auto pair = [](const std::vector<double>& v) {
     return v.size() == 2 ? std::optional<std::array<double, 2>>({v[0], v[1]}) : std::nullopt;
   };
-  const sim::OdometryNoise noise = app::OdometryNoiseWith(
+  const core::OdometryNoise noise = sim::OdometryNoiseWith(
       world.robot().odometry_noise, pair(request.odometry_noise), pair(request.odometry_bias));
-  app::CheckOdometryNoise(noise);
-  app::SimulatedRobot simulated(world, request.seed, noise);
+  sim::CheckOdometryNoise(noise);
+  sim::SimulatedRobot simulated(world, request.seed, noise);
   robot::Robot& robot = simulated.robot();
 
   robot::RobotServerOptions options;
@@ -51,7 +51,7 @@ void Serve(const SimServeRequest& request) {
   };
   robot::RobotServer server(robot, options);
   if (!request.port_file.empty()) {
-    app::WriteFileAtomically(request.port_file, std::to_string(server.port()) + "\n");
+    io::WriteFileAtomically(request.port_file, std::to_string(server.port()) + "\n");
   }
   std::fprintf(stderr, "sim-serve: listening on %s (world %s, seed %llu); Ctrl-C stops\n",
                server.address().c_str(), request.world_path.c_str(),

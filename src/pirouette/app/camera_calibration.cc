@@ -13,11 +13,11 @@
 #include <string_view>
 #include <system_error>
 
-#include "pirouette/app/atomic_file.h"
-#include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/atomic_file.h"
+#include "pirouette/io/camera_file.h"
 #include "pirouette/vision/chessboard_detector.h"
 #include "pirouette/vision/intrinsics_calibration.h"
 #include "pirouette/vision/mount_calibration.h"
@@ -131,7 +131,7 @@ camera::CameraModel WithMount(const camera::CameraModel& c, const camera::Mount&
 }
 
 void WriteCamera(const std::string& path, const camera::CameraModel& camera) {
-  WriteFileAtomically(path, camera::CameraFileText(camera));
+  io::WriteFileAtomically(path, io::CameraFileText(camera));
 }
 
 }  // namespace
@@ -234,7 +234,7 @@ CalibrationReport CalibrateIntrinsics(const IntrinsicsCalibrationRequest& reques
   camera::Vignetting vignetting;
   std::error_code error;
   if (fs::exists(request.out_path, error)) {
-    const camera::CameraModel old = camera::LoadCameraFile(request.out_path);
+    const camera::CameraModel old = io::LoadCameraFile(request.out_path);
     name = old.name();
     mount = old.mount();
     vignetting = old.vignetting();
@@ -304,7 +304,7 @@ CalibrationReport CalibrateIntrinsics(const IntrinsicsCalibrationRequest& reques
 }
 
 CalibrationReport CalibrateVignetting(const VignettingCalibrationRequest& request) {
-  const camera::CameraModel camera = camera::LoadCameraFile(request.camera_path);
+  const camera::CameraModel camera = io::LoadCameraFile(request.camera_path);
   const cv::Mat bgr = ReadBgr(request.image_path);
   CheckCameraSize(bgr, request.image_path, camera, request.camera_path);
   std::optional<vision::VignettingFit> fit;
@@ -353,7 +353,7 @@ CalibrationReport CalibrateMount(const MountCalibrationRequest& request) {
     throw core::InputError("--board-thickness", 0, "",
                            fmt::format("must be >= 0, got {}", request.board_thickness_m));
   }
-  const camera::CameraModel camera = camera::LoadCameraFile(request.camera_path);
+  const camera::CameraModel camera = io::LoadCameraFile(request.camera_path);
   const cv::Mat bgr = ReadBgr(request.image_path);
   CheckCameraSize(bgr, request.image_path, camera, request.camera_path);
   const auto corners = vision::ChessboardDetector(pattern).Find(bgr);

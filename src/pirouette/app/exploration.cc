@@ -14,8 +14,6 @@
 
 #include "pirouette/app/frame_mapper.h"
 #include "pirouette/app/look_ahead.h"
-#include "pirouette/app/simulated_robot.h"
-#include "pirouette/app/stage_timer.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
@@ -24,7 +22,9 @@
 #include "pirouette/explore/path.h"
 #include "pirouette/explore/planner.h"
 #include "pirouette/robot/robot_error.h"
+#include "pirouette/run/stage_timer.h"
 #include "pirouette/sim/sim_robot.h"
+#include "pirouette/sim/simulated_robot.h"
 
 namespace pirouette::app {
 namespace {
@@ -76,7 +76,7 @@ class Explorer {
     } catch (const robot::RobotError&) {
       // A robot that stopped answering has no final pose to give.
     }
-    result_.wall_time_s = Seconds(Clock::now() - start_);
+    result_.wall_time_s = run::Seconds(Clock::now() - start_);
     result_.times.perceive_s = mapper_.perceive_s();
     result_.times.update_s = mapper_.update_s();
     result_.times.localize_s = mapper_.localize_s();
@@ -114,7 +114,7 @@ class Explorer {
       }
       std::optional<explore::Plan> plan;
       {
-        StageTimer timer(result_.times.plan_s);
+        run::StageTimer timer(result_.times.plan_s);
         plan = planner_->Next(PlanningMap(), Pose());
       }
       if (!plan) {
@@ -179,15 +179,15 @@ class Explorer {
     return last_seen_;
   }
 
-  robot::MoveOutcome Execute(const robot::Move& move) {
-    robot::MoveOutcome outcome = robot_.Execute(move);
+  core::MoveOutcome Execute(const core::Move& move) {
+    core::MoveOutcome outcome = robot_.Execute(move);
     motions_since_frame_.push_back(outcome);
     return outcome;
   }
 
   void Turn(double radians) {
     if (std::abs(radians) < 1e-9) return;
-    Execute(robot::Move::Turn(radians));
+    Execute(core::Move::Turn(radians));
     ++result_.turns;
     result_.rotation_deg += std::abs(radians) * 180.0 / std::numbers::pi;
   }
@@ -214,7 +214,7 @@ class Explorer {
   // A straight move as made; false when it stopped at contact (the robot
   // then looks at what it touched, which maps the bumper's hit with it).
   bool Drive(double metres) {
-    const robot::MoveOutcome outcome = Execute(robot::Move::Straight(metres));
+    const core::MoveOutcome outcome = Execute(core::Move::Straight(metres));
     looked_since_drive_ = false;
     ++result_.moves;
     result_.path_length_m += std::abs(outcome.achieved);
@@ -502,7 +502,7 @@ class Explorer {
     progress.pirouettes = result_.pirouettes;
     progress.known_area_m2 =
         static_cast<double>(mapper_.grid().KnownCellCount()) * cell_m_ * cell_m_;
-    progress.elapsed_s = Seconds(Clock::now() - start_);
+    progress.elapsed_s = run::Seconds(Clock::now() - start_);
     observer_.on_progress(progress);
   }
 
@@ -518,7 +518,7 @@ class Explorer {
   FrameMapper mapper_;
   const LookAhead& look_;
   FrameMapper::Seen last_seen_;
-  std::vector<robot::MoveOutcome> motions_since_frame_;
+  std::vector<core::MoveOutcome> motions_since_frame_;
   std::unique_ptr<explore::Planner> planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
   core::Pose2 start_pose_;
@@ -594,7 +594,7 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   if (options.max_range_m < 0.0 || !std::isfinite(options.max_range_m)) {
     throw core::InputError("--max-range", 0, "", "must be a number > 0 (metres)");
   }
-  if (options.odometry_noise) CheckOdometryNoise(*options.odometry_noise);
+  if (options.odometry_noise) sim::CheckOdometryNoise(*options.odometry_noise);
   if (options.pirouette_turns < 4 || options.pirouette_turns > 72) {
     throw core::InputError("--turns", 0, "", "a pirouette has between 4 and 72 turns");
   }
@@ -615,14 +615,14 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
                           const ExplorationObserver& observer) {
   CheckExplorationOptions(options);
   const camera::CameraModel& camera = world.robot().camera;
-  SimulatedRobot simulated(world, options.seed, options.odometry_noise);
+  sim::SimulatedRobot simulated(world, options.seed, options.odometry_noise);
   sim::SimRobot& robot = simulated.robot();
   FloorMasker masker(options.method, world, camera);
   // The truth at every frame, for the pose error.
   std::vector<core::Pose2> truth;
   ExplorationObserver watching = observer;
   watching.on_capture = [&](const robot::Frame& frame,
-                            const std::vector<robot::MoveOutcome>& motions) {
+                            const std::vector<core::MoveOutcome>& motions) {
     truth.push_back(robot.TruePose());
     if (observer.on_capture) observer.on_capture(frame, motions);
   };

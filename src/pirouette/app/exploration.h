@@ -64,7 +64,7 @@ struct ExplorationOptions {
   LocalizeKind localize = LocalizeKind::kNone;
   localize::TrackerOptions tracker;
   // The simulator's motion error; none: the world file's odometry_noise.
-  std::optional<sim::OdometryNoise> odometry_noise;
+  std::optional<core::OdometryNoise> odometry_noise;
   // Checked between steps; when it becomes true the run ends with status
   // "interrupted" and the map so far.
   const std::atomic<bool>* stop_requested = nullptr;
@@ -152,7 +152,7 @@ struct ExplorationObserver {
   std::function<void(const FrameEvent&)> on_frame;
   // Every frame as the robot gave it, with the motions made since the one
   // before (a run log records them), before it is mapped.
-  std::function<void(const robot::Frame&, const std::vector<robot::MoveOutcome>& motions)>
+  std::function<void(const robot::Frame&, const std::vector<core::MoveOutcome>& motions)>
       on_capture;
   // The frame just captured showed a forward move of leg_m blocked (the
   // mapper confirmed the blocking hits).

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <map>
 
-#include "pirouette/sim/world_file.h"
+#include "pirouette/io/world_file.h"
 
 namespace pirouette::app {
 namespace {
@@ -43,7 +43,7 @@ std::vector<ExploreEvalRun> EvaluateExploration(
     const ExploreEvalRequest& request, const std::function<void(const ExploreEvalRun&)>& on_run) {
   std::vector<ExploreEvalRun> runs;
   for (const std::string& path : request.world_paths) {
-    const sim::World world = sim::LoadWorldFile(path);
+    const sim::World world = io::LoadWorldFile(path);
     for (PlannerKind planner : request.planners) {
       for (std::uint64_t seed : request.seeds) {
         ExplorationOptions options = request.options;

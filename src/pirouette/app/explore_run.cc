@@ -8,22 +8,22 @@
 #include <memory>
 #include <optional>
 
-#include "pirouette/app/atomic_file.h"
-#include "pirouette/app/colour_map_file.h"
 #include "pirouette/app/exploration_video.h"
-#include "pirouette/app/image_io.h"
 #include "pirouette/app/map_evaluation.h"
-#include "pirouette/app/map_file.h"
 #include "pirouette/app/map_picture.h"
-#include "pirouette/app/progress_line.h"
-#include "pirouette/app/run_log.h"
-#include "pirouette/app/simulated_robot.h"
-#include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/atomic_file.h"
+#include "pirouette/io/camera_file.h"
+#include "pirouette/io/colour_map_file.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/map_file.h"
+#include "pirouette/io/run_log.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/robot/remote_robot.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/run/progress_line.h"
+#include "pirouette/sim/simulated_robot.h"
 #include "pirouette/vision/floor_segmenter.h"
 
 namespace pirouette::app {
@@ -95,10 +95,10 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
   const std::filesystem::path out(out_dir);
   const mapping::OccupancyGrid seen = result.grid.CroppedToKnown(kMapMarginCells);
   mapping::TrinaryMap map = seen.ToTrinary();
-  WriteRosMap(map, (out / "map.yaml").string());
-  WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
-                 ColourMapPathFor((out / "map.yaml").string()));
-  WritePng((out / "map.png").string(), DrawMapPicture(seen, result.path, result.stops));
+  io::WriteRosMap(map, (out / "map.yaml").string());
+  io::WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
+                     io::ColourMapPathFor((out / "map.yaml").string()));
+  io::WritePng((out / "map.png").string(), DrawMapPicture(seen, result.path, result.stops));
   return map;
 }
 
@@ -114,9 +114,9 @@ RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* 
   if (!(radius > 0.0)) {
     throw core::InputError("--radius", 0, "", "a robot without a world needs its radius (metres)");
   }
-  return RobotDescription{request.camera_path.empty() ? world->robot().camera
-                                                      : camera::LoadCameraFile(request.camera_path),
-                          radius};
+  return RobotDescription{
+      request.camera_path.empty() ? world->robot().camera : io::LoadCameraFile(request.camera_path),
+      radius};
 }
 
 // Connects to the robot at request.robot_url (before any output is made,
@@ -150,7 +150,7 @@ ExplorationResult ExploreRemote(robot::RemoteRobot& robot, const ExploreRequest&
 
 ExploreReport RunExplore(const ExploreRequest& request) {
   std::optional<sim::World> world;
-  if (!request.world_path.empty()) world = sim::LoadWorldFile(request.world_path);
+  if (!request.world_path.empty()) world = io::LoadWorldFile(request.world_path);
   if (request.robot_url.empty() && !world) {
     throw core::InputError("--world", 0, "",
                            "give a world to explore in the simulator, or --robot");
@@ -163,8 +163,8 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   }
   ExplorationOptions options = request.options;
   if (world && (request.odometry_noise || request.odometry_bias)) {
-    options.odometry_noise = OdometryNoiseWith(world->robot().odometry_noise,
-                                               request.odometry_noise, request.odometry_bias);
+    options.odometry_noise = sim::OdometryNoiseWith(world->robot().odometry_noise,
+                                                    request.odometry_noise, request.odometry_bias);
   }
   CheckExplorationOptions(options);
   const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
@@ -180,7 +180,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   std::optional<ExplorationVideo> video;
   if (request.video) video.emplace((out / "explore.mp4").string());
 
-  ProgressLine progress(request.quiet);
+  run::ProgressLine progress(request.quiet);
   ExplorationObserver observer;
   observer.on_progress = [&progress](const ExplorationProgress& p) {
     progress.Show(p.elapsed_s, [&] {
@@ -189,10 +189,10 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     });
   };
   if (video) observer.on_frame = [&video](const FrameEvent& event) { video->AddFrame(event); };
-  std::optional<RunLogWriter> log;
+  std::optional<io::RunLogWriter> log;
   std::string record_error;
   if (!request.record_dir.empty()) {
-    RunLogInfo info;
+    io::RunLogInfo info;
     info.radius_m = robot_info.radius_m;
     info.cell_m = request.options.cell_m > 0.0 ? request.options.cell_m
                                                : DefaultCellSize(robot_info.radius_m);
@@ -209,7 +209,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     // A log that cannot be written (a full disk) stops recording, not the
     // run: the map is worth more than the log.
     observer.on_capture = [&log, &record_error](const robot::Frame& frame,
-                                                const std::vector<robot::MoveOutcome>& motions) {
+                                                const std::vector<core::MoveOutcome>& motions) {
       if (!record_error.empty()) return;
       try {
         log->AddFrame(frame, motions);
@@ -240,13 +240,14 @@ ExploreReport RunExplore(const ExploreRequest& request) {
                        world ? MapEvaluationToJson(EvaluateMap(map, *world)) : nlohmann::json());
   if (!record_error.empty()) report.run["record_error"] = record_error;
   if (request.robot_url.empty()) {
-    const sim::OdometryNoise noise = options.odometry_noise.value_or(world->robot().odometry_noise);
+    const core::OdometryNoise noise =
+        options.odometry_noise.value_or(world->robot().odometry_noise);
     report.run["odometry_noise"] = {{"translation", noise.translation},
                                     {"rotation", noise.rotation},
                                     {"translation_bias", noise.translation_bias},
                                     {"rotation_bias", noise.rotation_bias}};
   }
-  WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
+  io::WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
   return report;
 }

@@ -28,7 +28,7 @@ struct ExploreRequest {
   double robot_timeout_s = 30.0;  // longest wait for a reply of the robot
   // The simulator's motion error, overriding the world file's: standard
   // deviations {translation, rotation} and biases {translation, rotation},
-  // as fractions of each move (sim::OdometryNoise).
+  // as fractions of each move (core::OdometryNoise).
   std::optional<std::array<double, 2>> odometry_noise;
   std::optional<std::array<double, 2>> odometry_bias;
 };
@@ -51,7 +51,7 @@ ExploreReport RunExplore(const ExploreRequest& request);
 // Writes OUT/map.yaml, OUT/map.pgm (the part of the result's grid the robot
 // saw, with a margin), OUT/map.png (with its path and stops) and
 // OUT/map_colours.png (its colour layer: localize::ColourMap::FromSightings of
-// the result's colour sightings, app::WriteColourMap), atomically; returns
+// the result's colour sightings, io::WriteColourMap), atomically; returns
 // the map written.
 mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result);
 

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <utility>
 
-#include "pirouette/app/column_colour.h"
-#include "pirouette/app/image_io.h"
-#include "pirouette/app/stage_timer.h"
+#include "pirouette/io/image_io.h"
 #include "pirouette/mapping/range_sensor_model.h"
+#include "pirouette/run/stage_timer.h"
+#include "pirouette/vision/column_colour.h"
 
 namespace pirouette::app {
 namespace {
@@ -29,8 +29,8 @@ std::vector<localize::ColourSighting> ColouredHits(const cv::Mat3b& bgr, const c
   for (std::size_t u = 0; u < profile.readings.size(); ++u) {
     const core::RangeReading& r = profile.readings[u];
     if (r.kind != core::ReadingKind::kHit) continue;
-    const localize::ColourClass c = ColumnColour(bgr, mask, static_cast<int>(u));
-    if (c == localize::ColourClass::kNone) continue;
+    const core::ColourClass c = vision::ColumnColour(bgr, mask, static_cast<int>(u));
+    if (c == core::ColourClass::kNone) continue;
     hits.push_back(
         {r.range_m * Eigen::Vector2d(std::cos(r.bearing_rad), std::sin(r.bearing_rad)), c});
   }
@@ -55,8 +55,8 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
 FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
   Seen seen;
   {
-    StageTimer timer(perceive_s_);
-    seen.bgr = ToBgrMat(frame.image);
+    run::StageTimer timer(perceive_s_);
+    seen.bgr = io::ToBgrMat(frame.image);
     seen.mask = mask_(seen.bgr);
     seen.profile = extractor_.Extract(seen.mask);
     colour_frames_.push_back({frame.odometry, ColouredHits(seen.bgr, seen.mask, seen.profile)});
@@ -67,7 +67,7 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
     return seen;
   }
   {
-    StageTimer timer(localize_s_);
+    run::StageTimer timer(localize_s_);
     if (tracker_->StartsStop(frame.odometry)) {
       before_stop_ = grid_;
       stop_events_.clear();
@@ -102,13 +102,13 @@ std::vector<localize::ColourSighting> FrameMapper::ColourSightings() const {
 }
 
 void FrameMapper::Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot) {
-  StageTimer timer(update_s_);
+  run::StageTimer timer(update_s_);
   mapping::InsertProfile(grid_, profile, map_T_robot);
   mapping::MarkFootprintFree(grid_, map_T_robot.translation(), setup_.radius_m);
 }
 
 void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
-  StageTimer timer(update_s_);
+  run::StageTimer timer(update_s_);
   core::ObstacleProfile bump;
   bump.max_range_m = setup_.radius_m + setup_.cell_m;
   bump.readings.push_back({0.0, setup_.radius_m + 0.5 * setup_.cell_m, core::ReadingKind::kHit});
@@ -130,7 +130,7 @@ void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
 void FrameMapper::Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
                           double leg_m) {
   const LookAhead::Finding finding = look_.Blocking(profile, leg_m);
-  StageTimer timer(update_s_);
+  run::StageTimer timer(update_s_);
   for (int round = 0; round < 4; ++round) {
     grid_.BeginFrame();
     for (const Eigen::Vector2d& hit : finding.hits_robot) {

@@ -82,7 +82,7 @@ class FrameMapper {
                        double leg_m);
 
   // Where the frames saw the bases of obstacles and their colours
-  // (app::ColumnColour of each hit's column), at the frames' map poses (with
+  // (vision::ColumnColour of each hit's column), at the frames' map poses (with
   // tracking, where the tracker last put them): the map's colour layer.
   std::vector<localize::ColourSighting> ColourSightings() const;
 

@@ -12,18 +12,18 @@
 #include <numbers>
 #include <optional>
 
-#include "pirouette/app/colour_map_file.h"
 #include "pirouette/app/exploration.h"
-#include "pirouette/app/map_file.h"
 #include "pirouette/app/place_recognition.h"
-#include "pirouette/app/place_table_file.h"
-#include "pirouette/app/progress_line.h"
-#include "pirouette/app/simulated_pirouette.h"
-#include "pirouette/app/stage_timer.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/colour_map_file.h"
+#include "pirouette/io/map_file.h"
+#include "pirouette/io/place_table_file.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/mapping/radial_profile.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/run/progress_line.h"
+#include "pirouette/run/stage_timer.h"
+#include "pirouette/sim/simulated_pirouette.h"
 
 namespace pirouette::app {
 namespace {
@@ -67,8 +67,8 @@ MapAgreement AgreementAtShift(const localize::PlaceView& query,
     const core::ReadingKind qk = kinds[static_cast<std::size_t>(b)];
     const bool colour_mismatch =
         !query.colours.empty() && !map_view.colours.empty() &&
-        query.colours[static_cast<std::size_t>(b)] != localize::ColourClass::kNone &&
-        map_view.colours[static_cast<std::size_t>(m)] != localize::ColourClass::kNone &&
+        query.colours[static_cast<std::size_t>(b)] != core::ColourClass::kNone &&
+        map_view.colours[static_cast<std::size_t>(m)] != core::ColourClass::kNone &&
         query.colours[static_cast<std::size_t>(b)] != map_view.colours[static_cast<std::size_t>(m)];
     // Floor seen clear where the map is clear says little (most bearings of
     // an open floor): such bins weigh kClearWeight.
@@ -162,7 +162,7 @@ MapView CastMapView(const mapping::TrinaryMap& map, const Eigen::Vector2d& origi
   MapView v;
   v.ranges_m.assign(kBins, max_range_m);
   v.kinds.assign(kBins, MapRayKind::kClear);
-  if (!colours.empty()) v.colours.assign(kBins, localize::ColourClass::kNone);
+  if (!colours.empty()) v.colours.assign(kBins, core::ColourClass::kNone);
   for (int b = 0; b < kBins; ++b) {
     const double a = (b + 0.5) * kBinRad;
     const Eigen::Vector2d dir(std::cos(a), std::sin(a));
@@ -257,7 +257,7 @@ std::string MapTableName(const mapping::TrinaryMap& map, const localize::ColourM
   h = Fnv(h, map.cells.data(), map.cells.size() * sizeof(mapping::CellState));
   // A map without a colour layer keeps the name it had before there were any.
   if (!colours.empty()) {
-    h = Fnv(h, colours.cells().data(), colours.cells().size() * sizeof(localize::ColourClass));
+    h = Fnv(h, colours.cells().data(), colours.cells().size() * sizeof(core::ColourClass));
   }
   // "rays 2": CastMapView meets an obstacle through a gap in its outline (a
   // table made before that is not reused).
@@ -410,8 +410,8 @@ LocateResult RunLocate(const LocateRequest& request) {
     throw core::InputError("", 0, "--pose", "give --pose X,Y,H or --random N (N >= 1)");
   }
   // Rays pass the map's pinholes (FillPinholes), here and in the table.
-  mapping::TrinaryMap map = FillPinholes(ReadRosMap(request.map_path), kPinholeCells);
-  const sim::World world = sim::LoadWorldFile(request.world_path);
+  mapping::TrinaryMap map = FillPinholes(io::ReadRosMap(request.map_path), kPinholeCells);
+  const sim::World world = io::LoadWorldFile(request.world_path);
   LocateResult result;
   result.coarse_cell_m = CoarseCellSize(world);
   result.spacing_m = DefaultTableSpacing(world);
@@ -420,13 +420,13 @@ LocateResult RunLocate(const LocateRequest& request) {
       request.table_path.empty()
           ? (std::filesystem::path(request.map_path).parent_path() / "places.yaml").string()
           : request.table_path;
-  if (request.pose) PlaceRobot(world, *request.pose, "--pose");  // throws when it does not fit
+  if (request.pose) sim::PlaceRobot(world, *request.pose, "--pose");  // throws when it does not fit
   localize::ColourMap colours;
   if (request.use_colours) {
-    result.colours_path =
-        request.colours_path.empty() ? ColourMapPathFor(request.map_path) : request.colours_path;
+    result.colours_path = request.colours_path.empty() ? io::ColourMapPathFor(request.map_path)
+                                                       : request.colours_path;
     if (!request.colours_path.empty() || std::filesystem::exists(result.colours_path)) {
-      colours = ReadColourMap(result.colours_path, map.geometry);
+      colours = io::ReadColourMap(result.colours_path, map.geometry);
     } else {
       result.colours_path.clear();
     }
@@ -437,7 +437,7 @@ LocateResult RunLocate(const LocateRequest& request) {
       MapTableName(map, colours, world.robot().radius, result.spacing_m, result.max_range_m);
   localize::PlaceTable table;
   if (std::filesystem::exists(result.table_path)) {
-    table = LoadPlaceTable(result.table_path);
+    table = io::LoadPlaceTable(result.table_path);
     result.table_loaded = table.world() == name && !table.entries().empty();
     result.table_replaced = !result.table_loaded;
   }
@@ -448,17 +448,17 @@ LocateResult RunLocate(const LocateRequest& request) {
       throw core::InputError(request.map_path, 0, "",
                              "the map has no free place where the robot fits");
     }
-    SavePlaceTable(table, result.table_path);
+    io::SavePlaceTable(table, result.table_path);
   }
-  result.table_s = Seconds(Clock::now() - table_start);
+  result.table_s = run::Seconds(Clock::now() - table_start);
   result.table_places = static_cast<int>(table.entries().size());
 
   const std::vector<core::Pose2> truths =
       request.pose ? std::vector<core::Pose2>{*request.pose}
-                   : RandomRobotPoses(world, request.random, request.seed, request.world_path);
+                   : sim::RandomRobotPoses(world, request.random, request.seed, request.world_path);
 
   PlaceObserver observer(world, request.method, result.max_range_m, request.seed);
-  ProgressLine line(request.quiet);
+  run::ProgressLine line(request.quiet);
   const auto start = Clock::now();
   double locate_s = 0.0;
   for (std::size_t q = 0; q < truths.size(); ++q) {
@@ -469,7 +469,7 @@ LocateResult RunLocate(const LocateRequest& request) {
     trial.seen = seen;
     trial.answer = Locate(map, colours, table, seen.view, seen.kinds, result.spacing_m,
                           result.coarse_cell_m, request.options);
-    locate_s += Seconds(Clock::now() - t0);
+    locate_s += run::Seconds(Clock::now() - t0);
     trial.position_error_m =
         (trial.answer.world_T_robot.translation() - trial.truth.translation()).norm();
     trial.heading_error_deg = std::abs(core::RadToDeg(
@@ -481,7 +481,7 @@ LocateResult RunLocate(const LocateRequest& request) {
     result.cannot_tell += trial.answer.found ? 0 : 1;
     result.wrong += trial.answer.found && !close ? 1 : 0;
     result.trials.push_back(std::move(trial));
-    line.Show(Seconds(Clock::now() - start), [&] {
+    line.Show(run::Seconds(Clock::now() - start), [&] {
       return fmt::format("locate {}: {}/{} pirouettes, {} found right, {} cannot tell, {} wrong",
                          world.name(), q + 1, truths.size(), result.found_right, result.cannot_tell,
                          result.wrong);

@@ -37,7 +37,7 @@ struct MapView {
   std::vector<MapRayKind> kinds;  // per bin
   // Per bin, the colour layer's class at a hit (kNone elsewhere or where the
   // layer has none); empty without a colour layer.
-  std::vector<localize::ColourClass> colours;
+  std::vector<core::ColourClass> colours;
 };
 
 // The map's ROP from `origin_m` (world frame), bin b cast along the bin's
@@ -194,8 +194,8 @@ struct LocateResult {
   double mean_locate_s = 0.0;  // per query, the pirouette's simulation excluded
 };
 
-// `pirouette locate`: reads the map (app::ReadRosMap), its colour layer (see
-// LocateRequest::colours_path; app::ReadColourMap) and the world, loads the
+// `pirouette locate`: reads the map (io::ReadRosMap), its colour layer (see
+// LocateRequest::colours_path; io::ReadColourMap) and the world, loads the
 // map's place table from request.table_path when the file exists and was made
 // for this map and settings (else builds it with BuildMapPlaceTable at
 // DefaultTableSpacing and writes it there, result.table_replaced when a file

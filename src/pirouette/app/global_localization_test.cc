@@ -25,16 +25,16 @@ Room MakeRoom() {
   Room room;
   const core::GridGeometry& g = room.map.geometry;
   room.map.cells.assign(g.CellCount(), mapping::CellState::kFree);
-  std::vector<localize::ColourClass> colours(g.CellCount(), localize::ColourClass::kNone);
+  std::vector<core::ColourClass> colours(g.CellCount(), core::ColourClass::kNone);
   for (int y = 0; y < g.height(); ++y) {
     for (int x = 0; x < g.width(); ++x) {
       const bool west = x == 0;
       const bool east = x == g.width() - 1;
       if (!west && !east && y != 0 && y != g.height() - 1) continue;
       room.map.cells[g.Flat({x, y})] = mapping::CellState::kOccupied;
-      colours[g.Flat({x, y})] = west   ? localize::ColourClass::kHue0
-                                : east ? localize::ColourClass::kHue8
-                                       : localize::ColourClass::kGrey;
+      colours[g.Flat({x, y})] = west   ? core::ColourClass::kHue0
+                                : east ? core::ColourClass::kHue8
+                                       : core::ColourClass::kGrey;
     }
   }
   room.colours = localize::ColourMap(g, std::move(colours));
@@ -103,16 +103,16 @@ TEST(GlobalLocalizationTest, TheMapViewHasItsHitsColours) {
   const Room room = MakeRoom();
   const MapView v = CastMapView(room.map, {0.5, 0.3}, kMaxRange, room.colours);
   ASSERT_EQ(v.colours.size(), 360u);
-  EXPECT_EQ(v.colours[0], localize::ColourClass::kHue8);    // east, 0.48 m
-  EXPECT_EQ(v.colours[180], localize::ColourClass::kHue0);  // west
-  EXPECT_EQ(v.colours[90], localize::ColourClass::kGrey);   // north
+  EXPECT_EQ(v.colours[0], core::ColourClass::kHue8);    // east, 0.48 m
+  EXPECT_EQ(v.colours[180], core::ColourClass::kHue0);  // west
+  EXPECT_EQ(v.colours[90], core::ColourClass::kGrey);   // north
   EXPECT_TRUE(CastMapView(room.map, {0.5, 0.3}, kMaxRange).colours.empty());
 }
 
 TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle) {
   Room room = MakeRoom();
   const core::GridGeometry& g = room.map.geometry;
-  std::vector<localize::ColourClass> colours = room.colours.cells();
+  std::vector<core::ColourClass> colours = room.colours.cells();
   // A block of cells x 35..39, y 13..17: its outline occupied (hue 4), its
   // inside unknown, and a hole in its west face at (35, 15).
   for (int y = 13; y <= 17; ++y) {
@@ -120,11 +120,11 @@ TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle
       const bool outline = x == 35 || x == 39 || y == 13 || y == 17;
       room.map.cells[g.Flat({x, y})] =
           outline ? mapping::CellState::kOccupied : mapping::CellState::kUnknown;
-      if (outline) colours[g.Flat({x, y})] = localize::ColourClass::kHue4;
+      if (outline) colours[g.Flat({x, y})] = core::ColourClass::kHue4;
     }
   }
   room.map.cells[g.Flat({35, 15})] = mapping::CellState::kUnknown;
-  colours[g.Flat({35, 15})] = localize::ColourClass::kNone;
+  colours[g.Flat({35, 15})] = core::ColourClass::kNone;
   // Unseen floor north, with no obstacle beside it; and south-west, in the
   // shadow of one obstacle cell (beside one edge only).
   for (int y = 20; y <= 22; ++y) room.map.cells[g.Flat({25, y})] = mapping::CellState::kUnknown;
@@ -135,7 +135,7 @@ TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle
   const MapView v = CastMapView(room.map, {0.51, 0.31}, kMaxRange, room.colours);
   EXPECT_EQ(v.kinds[0], MapRayKind::kHit);  // east, through the hole
   EXPECT_NEAR(v.ranges_m[0], 0.19, 0.01);
-  EXPECT_EQ(v.colours[0], localize::ColourClass::kHue4);
+  EXPECT_EQ(v.colours[0], core::ColourClass::kHue4);
   EXPECT_EQ(v.kinds[90], MapRayKind::kUnknown);  // north: the map cannot say
   EXPECT_NEAR(v.ranges_m[90], 0.09, 0.01);
   EXPECT_EQ(v.kinds[225], MapRayKind::kUnknown);  // south-west, the shadow

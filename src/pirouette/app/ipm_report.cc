@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/camera_file.h"
 
 namespace pirouette::app {
 
@@ -19,7 +19,7 @@ std::string IpmReport(const IpmReportRequest& request) {
   if (!(request.step_m > 0.0) || !std::isfinite(request.step_m)) {
     throw core::InputError("--step", 0, "", "the step must be a number > 0 (metres)");
   }
-  const camera::CameraModel camera = camera::LoadCameraFile(request.camera_path);
+  const camera::CameraModel camera = io::LoadCameraFile(request.camera_path);
   const double max_range = camera::MaxRange(camera, request.cell_m);
   const std::optional<camera::RangeInterval> measurable = camera::MeasurableRanges(camera);
   const std::vector<camera::RangeError> table =

@@ -13,14 +13,14 @@
 #include <opencv2/videoio.hpp>
 #include <system_error>
 
-#include "pirouette/app/atomic_file.h"
-#include "pirouette/app/image_io.h"
 #include "pirouette/app/segment_image.h"
-#include "pirouette/app/stage_timer.h"
-#include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/atomic_file.h"
+#include "pirouette/io/camera_file.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/run/stage_timer.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::app {
@@ -127,7 +127,7 @@ void WriteProfiles(const std::string& out_dir, const std::vector<CaptureFrame>& 
     text += CaptureFrameJson(frame);
     text += '\n';
   }
-  WriteFileAtomically((fs::path(out_dir) / "profiles.jsonl").string(), text);
+  io::WriteFileAtomically((fs::path(out_dir) / "profiles.jsonl").string(), text);
 }
 
 // Writes `text` from `x` on the caption line whose baseline is `y`; returns
@@ -216,7 +216,7 @@ LiveCaptureResult RunLiveCapture(const LiveCaptureRequest& request,
   std::optional<vision::ProfileExtractor> extractor;
   LiveCaptureResult result;
   if (!request.camera_path.empty()) {
-    camera = camera::LoadCameraFile(request.camera_path);
+    camera = io::LoadCameraFile(request.camera_path);
     result.max_range_m = request.max_range_m.value_or(camera::MaxRange(*camera, 0.01));
     extractor.emplace(camera::InversePerspectiveMap(*camera), *result.max_range_m);
   }
@@ -264,7 +264,7 @@ LiveCaptureResult RunLiveCapture(const LiveCaptureRequest& request,
     std::optional<core::ObstacleProfile> profile;
     if (extractor) profile = extractor->Extract(mask);
     CaptureFrame frame;
-    frame.seconds = Seconds(Clock::now() - t0);
+    frame.seconds = run::Seconds(Clock::now() - t0);
     frame.index = index;
     frame.image = fmt::format("{:06d}.png", index);
     frame.floor_fraction = static_cast<double>(cv::countNonZero(mask)) / bgr.size().area();
@@ -277,16 +277,16 @@ LiveCaptureResult RunLiveCapture(const LiveCaptureRequest& request,
 
     const std::vector<int> rows = profile ? ReadingRows(*profile, *camera) : std::vector<int>();
     prepare_out();
-    WritePng((fs::path(request.out_dir) / frame.image).string(),
-             DrawCaptureOverlay(bgr, mask, frame, profile, rows));
+    io::WritePng((fs::path(request.out_dir) / frame.image).string(),
+                 DrawCaptureOverlay(bgr, mask, frame, profile, rows));
     result.frames.push_back(std::move(frame));
-    if (Seconds(Clock::now() - last_flush) >= kProfilesFlushSeconds) {
+    if (run::Seconds(Clock::now() - last_flush) >= kProfilesFlushSeconds) {
       WriteProfiles(request.out_dir, result.frames);
       last_flush = Clock::now();
     }
     if (on_frame) {
       on_frame({static_cast<int>(result.frames.size()), &result.frames.back(),
-                Seconds(Clock::now() - start)});
+                run::Seconds(Clock::now() - start)});
     }
   }
   if (result.frames_read == 0 && result.stop == CaptureStop::kEnd) {
@@ -294,7 +294,7 @@ LiveCaptureResult RunLiveCapture(const LiveCaptureRequest& request,
   }
   prepare_out();
   WriteProfiles(request.out_dir, result.frames);
-  result.wall_time_s = Seconds(Clock::now() - start);
+  result.wall_time_s = run::Seconds(Clock::now() - start);
   return result;
 }
 

@@ -9,15 +9,15 @@
 #include <memory>
 #include <utility>
 
-#include "pirouette/app/atomic_file.h"
 #include "pirouette/app/explore_run.h"
 #include "pirouette/app/frame_mapper.h"
 #include "pirouette/app/map_evaluation.h"
-#include "pirouette/app/progress_line.h"
-#include "pirouette/app/run_log.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/io/atomic_file.h"
+#include "pirouette/io/run_log.h"
+#include "pirouette/io/world_file.h"
+#include "pirouette/run/progress_line.h"
 #include "pirouette/vision/floor_segmenter.h"
 
 namespace pirouette::app {
@@ -47,7 +47,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
       throw core::InputError(option, 0, "", "must be a number > 0 (metres)");
     }
   }
-  const RunLog log = ReadRunLog(request.log_dir);
+  const io::RunLog log = io::ReadRunLog(request.log_dir);
   const std::string log_yaml = (fs::path(request.log_dir) / "log.yaml").string();
 
   MapperSetup setup{log.camera, 0.0, 0.0, 0.0, ExplorationOptions{}.occupancy, std::nullopt};
@@ -94,10 +94,10 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   std::optional<sim::World> world;
   std::string world_path = request.world_path;
   if (!world_path.empty()) {
-    world = sim::LoadWorldFile(world_path);
+    world = io::LoadWorldFile(world_path);
   } else if (!log.info.world.empty() && fs::exists(log.info.world)) {
     world_path = log.info.world;
-    world = sim::LoadWorldFile(world_path);
+    world = io::LoadWorldFile(world_path);
   }
 
   std::error_code error;
@@ -115,9 +115,9 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
       log.rows.front().odometry);
   MapLogReport report;
   ExplorationResult& result = report.result;
-  ProgressLine progress(request.quiet);
-  for (const RunLogRow& row : log.rows) {
-    const robot::Frame frame = ReadLogFrame(log, row);
+  run::ProgressLine progress(request.quiet);
+  for (const io::RunLogRow& row : log.rows) {
+    const robot::Frame frame = io::ReadLogFrame(log, row);
     if (row.contact) mapper.AddContact(row.odometry);
     const FrameMapper::Seen seen = mapper.AddFrame(frame);
     if (row.blocked_leg_m) mapper.ConfirmBlocking(seen.profile, seen.pose, *row.blocked_leg_m);
@@ -157,7 +157,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   run["stage_time_s"] = {{"perceive", Round(result.times.perceive_s, 1e-4)},
                          {"update", Round(result.times.update_s, 1e-4)}};
   if (world) run["eval"] = MapEvaluationToJson(EvaluateMap(map, *world));
-  WriteFileAtomically((fs::path(request.out_dir) / "run.json").string(), run.dump(2) + "\n");
+  io::WriteFileAtomically((fs::path(request.out_dir) / "run.json").string(), run.dump(2) + "\n");
   return report;
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pirouette/camera/camera_file.h"
+#include "pirouette/io/camera_file.h"
 
 namespace pirouette::app {
 namespace {
@@ -74,7 +74,7 @@ TEST(LookAheadTest, SomethingFillingTheViewAheadIsBlind) {
 
 TEST(LookAheadTest, NearRangeOfThePapersCameraIsAboutElevenCentimetres) {
   const camera::CameraModel camera =
-      camera::LoadCameraFile(std::string(PIROUETTE_WORLDS_DIR) + "/yujin.yaml");
+      io::LoadCameraFile(std::string(PIROUETTE_WORLDS_DIR) + "/yujin.yaml");
   const double near = NearRange(camera::InversePerspectiveMap(camera));
   EXPECT_GT(near, 0.08);
   EXPECT_LT(near, 0.14);

@@ -8,14 +8,14 @@
 #include <numbers>
 #include <random>
 
-#include "pirouette/app/image_io.h"
-#include "pirouette/app/simulated_pirouette.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/sim/ray_caster.h"
 #include "pirouette/sim/renderer.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/sim/simulated_pirouette.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::app {
@@ -117,7 +117,7 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
   }
   std::vector<WorldPerception> results;
   for (const std::string& path : request.world_paths) {
-    const sim::World world = sim::LoadWorldFile(path);
+    const sim::World world = io::LoadWorldFile(path);
     const camera::CameraModel& camera = world.robot().camera;
     WorldPerception result;
     result.world_path = path;
@@ -133,17 +133,17 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
     std::mt19937_64 rng(request.seed);
     double seconds = 0.0;
     for (int i = 0; i < request.poses; ++i) {
-      const sim::World placed = PlaceRobot(world, RandomPose(world, rng), path);
+      const sim::World placed = sim::PlaceRobot(world, RandomPose(world, rng), path);
       const auto since = [](std::chrono::steady_clock::time_point start) {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       };
       const auto render_start = std::chrono::steady_clock::now();
-      const std::vector<SimulatedFrame> frames =
-          SimulatePirouette(placed, renderer, request.seed + static_cast<std::uint64_t>(i));
+      const std::vector<sim::SimulatedFrame> frames =
+          sim::SimulatePirouette(placed, renderer, request.seed + static_cast<std::uint64_t>(i));
       seconds += since(render_start);
-      for (const SimulatedFrame& frame : frames) {
+      for (const sim::SimulatedFrame& frame : frames) {
         const auto start = std::chrono::steady_clock::now();
-        const cv::Mat1b mask = masker.Mask(ToBgrMat(frame.frame.image), frame.world_T_robot);
+        const cv::Mat1b mask = masker.Mask(io::ToBgrMat(frame.frame.image), frame.world_T_robot);
         const core::ObstacleProfile measured =
             vision::ExtractProfile(mask, ipm, result.max_range_m);
         seconds += since(start);

@@ -6,14 +6,14 @@
 #include <cmath>
 #include <string>
 
-#include "pirouette/app/image_io.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/sim/ray_caster.h"
 #include "pirouette/sim/renderer.h"
-#include "pirouette/sim/world_file.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::app {
@@ -72,7 +72,7 @@ TEST(PerceptionEvalTest, TrueMasksMeasureTheExtractorAlone) {
 // measure the segmenter, not a disagreement of the simulator with itself.
 TEST(PerceptionEvalTest, RenderedFramesAgreeWithTheTruth) {
   const sim::World world =
-      sim::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
+      io::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
   const camera::CameraModel& camera = world.robot().camera;
   sim::Renderer renderer(world, camera, {});
   const sim::RayCaster caster(world, camera);
@@ -81,7 +81,7 @@ TEST(PerceptionEvalTest, RenderedFramesAgreeWithTheTruth) {
   ProfileComparison comparison;
   for (int i = 0; i < 12; ++i) {
     const core::Pose2 pose(0.75, 0.65, core::DegToRad(30.0 * i));
-    const cv::Mat bgr = ToBgrMat(renderer.Render(pose));
+    const cv::Mat bgr = io::ToBgrMat(renderer.Render(pose));
     cv::Mat1b mask(bgr.rows, bgr.cols, uchar{0});
     for (int v = 0; v < bgr.rows; ++v) {
       for (int u = 0; u < bgr.cols; ++u) {

@@ -10,21 +10,21 @@
 #include <limits>
 #include <numbers>
 
-#include "pirouette/app/column_colour.h"
 #include "pirouette/app/exploration.h"
-#include "pirouette/app/image_io.h"
-#include "pirouette/app/place_table_file.h"
-#include "pirouette/app/progress_line.h"
-#include "pirouette/app/simulated_pirouette.h"
-#include "pirouette/app/stage_timer.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/explore/planner.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/place_table_file.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/mapping/radial_profile.h"
+#include "pirouette/run/progress_line.h"
+#include "pirouette/run/stage_timer.h"
 #include "pirouette/sim/renderer.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/sim/simulated_pirouette.h"
+#include "pirouette/vision/column_colour.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::app {
@@ -76,23 +76,24 @@ PlaceObserver::~PlaceObserver() = default;
 double PlaceObserver::max_range_m() const { return impl_->extractor.max_range_m(); }
 
 ObservedPlace PlaceObserver::Observe(const core::Pose2& world_T_robot, std::uint64_t seed) {
-  const sim::World placed = PlaceRobot(impl_->world, world_T_robot, "place");
-  const std::vector<SimulatedFrame> frames = SimulatePirouette(placed, impl_->renderer, seed);
+  const sim::World placed = sim::PlaceRobot(impl_->world, world_T_robot, "place");
+  const std::vector<sim::SimulatedFrame> frames =
+      sim::SimulatePirouette(placed, impl_->renderer, seed);
   // The odometry frame is the world frame at the start: bearings relative to
   // the robot's heading then are odometry bearings less that heading.
   const double start_heading = frames.front().frame.odometry.heading();
   std::vector<mapping::HeadedProfile> views;
-  std::vector<std::array<int, localize::kColourClasses>> votes(kBins);
-  for (const SimulatedFrame& frame : frames) {
-    const cv::Mat3b bgr = ToBgrMat(frame.frame.image);
+  std::vector<std::array<int, core::kColourClasses>> votes(kBins);
+  for (const sim::SimulatedFrame& frame : frames) {
+    const cv::Mat3b bgr = io::ToBgrMat(frame.frame.image);
     const cv::Mat1b mask = impl_->masker.Mask(bgr, frame.world_T_robot);
     const double heading = frame.frame.odometry.heading() - start_heading;
     core::ObstacleProfile profile = impl_->extractor.Extract(mask);
     for (int u = 0; u < static_cast<int>(profile.readings.size()); ++u) {
       const core::RangeReading& r = profile.readings[static_cast<std::size_t>(u)];
       if (r.kind == core::ReadingKind::kClear) continue;
-      const localize::ColourClass c = ColumnColour(bgr, mask, u);
-      if (c == localize::ColourClass::kNone) continue;
+      const core::ColourClass c = vision::ColumnColour(bgr, mask, u);
+      if (c == core::ColourClass::kNone) continue;
       ++votes[static_cast<std::size_t>(BinOf(r.bearing_rad + heading))]
              [static_cast<std::size_t>(c)];
     }
@@ -107,8 +108,8 @@ ObservedPlace PlaceObserver::Observe(const core::Pose2& world_T_robot, std::uint
     const auto& v = votes[static_cast<std::size_t>(b)];
     const auto best = std::max_element(v.begin(), v.end());
     out.view.colours.push_back(bin.kind != core::ReadingKind::kClear && *best > 0
-                                   ? static_cast<localize::ColourClass>(best - v.begin())
-                                   : localize::ColourClass::kNone);
+                                   ? static_cast<core::ColourClass>(best - v.begin())
+                                   : core::ColourClass::kNone);
   }
   return out;
 }
@@ -158,19 +159,19 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
   if (request.spacing_m && !(*request.spacing_m > 0.0 && std::isfinite(*request.spacing_m))) {
     throw core::InputError("", 0, "--spacing", "must be a number > 0 (metres)");
   }
-  const sim::World world = sim::LoadWorldFile(request.world_path);
+  const sim::World world = io::LoadWorldFile(request.world_path);
   PlacesResult result;
   result.world_name = world.name();
   result.coarse_cell_m = CoarseCellSize(world);
   result.spacing_m = request.spacing_m.value_or(DefaultTableSpacing(world));
   const double max_range = PlaceMaxRange(world, request.range_factor);
   PlaceObserver observer(world, request.method, max_range, request.seed);
-  ProgressLine line(request.quiet);
+  run::ProgressLine line(request.quiet);
   const auto start = Clock::now();
 
   localize::PlaceTable table;
   if (!request.table_path.empty() && std::filesystem::exists(request.table_path)) {
-    table = LoadPlaceTable(request.table_path);
+    table = io::LoadPlaceTable(request.table_path);
     if (table.world() != world.name()) {
       throw core::InputError(
           request.table_path, 0, "world",
@@ -189,7 +190,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
     result.table_loaded = true;
   } else {
     table = BuildPlaceTable(world, observer, result.spacing_m, [&](int done, int total) {
-      line.Show(Seconds(Clock::now() - start), [&] {
+      line.Show(run::Seconds(Clock::now() - start), [&] {
         return fmt::format("places {}: table {}/{} pirouettes", world.name(), done, total);
       });
     });
@@ -197,9 +198,9 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
       throw core::InputError(request.world_path, 0, "--spacing",
                              "no place of the grid has room for the robot");
     }
-    if (!request.table_path.empty()) SavePlaceTable(table, request.table_path);
+    if (!request.table_path.empty()) io::SavePlaceTable(table, request.table_path);
   }
-  result.build_s = Seconds(Clock::now() - start);
+  result.build_s = run::Seconds(Clock::now() - start);
   result.table_places = static_cast<int>(table.entries().size());
   result.max_range_m = table.max_range_m();
 
@@ -209,7 +210,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
   std::vector<double> heading_error_sum(result.scores.size(), 0.0);
   const auto query_start = Clock::now();
   const std::vector<core::Pose2> truths =
-      RandomRobotPoses(world, request.queries, request.seed, request.world_path);
+      sim::RandomRobotPoses(world, request.queries, request.seed, request.world_path);
   for (int q = 0; q < request.queries; ++q) {
     const core::Pose2& truth = truths[static_cast<std::size_t>(q)];
     const ObservedPlace seen = observer.Observe(truth, request.seed * 7919 + q);
@@ -263,7 +264,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
       record.answers.push_back(answer);
     }
     result.query_log.push_back(std::move(record));
-    line.Show(Seconds(Clock::now() - start), [&] {
+    line.Show(run::Seconds(Clock::now() - start), [&] {
       std::string text =
           fmt::format("places {}: query {}/{}", world.name(), q + 1, request.queries);
       for (const SignatureScore& score : result.scores) {
@@ -279,7 +280,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
     }
   }
   result.queries = request.queries;
-  result.query_s = Seconds(Clock::now() - query_start);
+  result.query_s = run::Seconds(Clock::now() - query_start);
   return result;
 }
 

@@ -28,7 +28,7 @@ struct ObservedPlace {
 // FloorMasker for the whole run, as a segmenter learns the floor online), its
 // obstacle profile extracted, the profiles merged (mapping::MergePirouette)
 // with bearings relative to the robot's heading at the pirouette's start, and
-// each hit or blind bin given the colour class (app::ColumnColour: the base
+// each hit or blind bin given the colour class (vision::ColumnColour: the base
 // of what was hit, or what fills the view of a blind column) most of its
 // readings voted for. Clear and colourless bins
 // are kNone. The constructor makes one pirouette at the world's robot start

@@ -9,7 +9,7 @@
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/io/world_file.h"
 
 namespace pirouette::app {
 namespace {
@@ -19,7 +19,7 @@ std::string World(const std::string& name) {
 }
 
 TEST(PlaceRecognitionTest, ATurnedPirouetteFindsItsPlaceAndHeading) {
-  const sim::World world = sim::LoadWorldFile(World("soccer_field"));
+  const sim::World world = io::LoadWorldFile(World("soccer_field"));
   PlaceObserver observer(world, MaskSource::kDefault, 0.6, 1);
   const ObservedPlace a = observer.Observe(core::Pose2(0.3, 0.3, 0.0), 1);
   const ObservedPlace b = observer.Observe(core::Pose2(0.3, 0.3, core::DegToRad(100.0)), 2);
@@ -28,7 +28,7 @@ TEST(PlaceRecognitionTest, ATurnedPirouetteFindsItsPlaceAndHeading) {
   ASSERT_EQ(a.kinds.size(), 360u);
   // Some bins hit something coloured (the field's walls or obstacles).
   int coloured = 0;
-  for (localize::ColourClass c : a.view.colours) coloured += c != localize::ColourClass::kNone;
+  for (core::ColourClass c : a.view.colours) coloured += c != core::ColourClass::kNone;
   EXPECT_GT(coloured, 30);
   for (bool use_colour : {false, true}) {
     const localize::Alignment al = localize::AlignProfiles(b.view, a.view, use_colour);
@@ -60,7 +60,7 @@ TEST(PlaceRecognitionTest, TheHeadingInvariantSignaturesFindMostPlaces) {
 }
 
 TEST(PlaceRecognitionTest, PirouettesAreReadNoFartherThanEveryColumnSeesTheFloor) {
-  const sim::World world = sim::LoadWorldFile(World("soccer_field"));
+  const sim::World world = io::LoadWorldFile(World("soccer_field"));
   const camera::CameraModel& camera = world.robot().camera;
   const double map_range = camera::MaxRange(camera, DefaultCellSize(world.robot().radius));
   EXPECT_DOUBLE_EQ(PlaceMaxRange(world, 1.0), map_range);

@@ -2,16 +2,16 @@
 
 #include <fmt/format.h>
 
-#include "pirouette/app/image_io.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/sim/renderer.h"
-#include "pirouette/sim/world_file.h"
 
 namespace pirouette::app {
 
 void RenderView(const RenderViewRequest& request) {
-  const sim::World world = sim::LoadWorldFile(request.world_path);
+  const sim::World world = io::LoadWorldFile(request.world_path);
   const Eigen::Vector2d p = request.world_T_robot.translation();
   if (!world.OnFloor(p)) {
     throw core::InputError(
@@ -22,7 +22,7 @@ void RenderView(const RenderViewRequest& request) {
   sim::RenderOptions options;
   options.seed = request.seed;
   sim::Renderer renderer(world, world.robot().camera, options);
-  WritePng(request.out_path, renderer.Render(request.world_T_robot));
+  io::WritePng(request.out_path, renderer.Render(request.world_T_robot));
 }
 
 }  // namespace pirouette::app

@@ -6,14 +6,14 @@
 #include <numbers>
 #include <opencv2/imgproc.hpp>
 
-#include "pirouette/app/image_io.h"
-#include "pirouette/app/simulated_pirouette.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/sim/renderer.h"
-#include "pirouette/sim/world_file.h"
+#include "pirouette/sim/simulated_pirouette.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::app {
@@ -135,8 +135,8 @@ cv::Mat3b PlotRadialProfile(const mapping::RadialProfile& rop, const std::vector
 }
 
 RopResult MakeRop(const RopRequest& request) {
-  const sim::World loaded = sim::LoadWorldFile(request.world_path);
-  const sim::World world = PlaceRobot(loaded, request.world_T_robot, "--pose");
+  const sim::World loaded = io::LoadWorldFile(request.world_path);
+  const sim::World world = sim::PlaceRobot(loaded, request.world_T_robot, "--pose");
   const camera::CameraModel& camera = world.robot().camera;
   const double max_range = request.max_range_m.value_or(camera::MaxRange(camera, request.cell_m));
   if (!(max_range > 0.0) || !std::isfinite(max_range)) {
@@ -145,12 +145,13 @@ RopResult MakeRop(const RopRequest& request) {
   sim::RenderOptions options;
   options.seed = request.seed;
   sim::Renderer renderer(world, camera, options);
-  const std::vector<SimulatedFrame> frames = SimulatePirouette(world, renderer, request.seed);
+  const std::vector<sim::SimulatedFrame> frames =
+      sim::SimulatePirouette(world, renderer, request.seed);
   const camera::InversePerspectiveMap ipm(camera);
   FloorMasker masker(request.method, world, camera);
   std::vector<mapping::HeadedProfile> views;
-  for (const SimulatedFrame& frame : frames) {
-    const cv::Mat3b bgr = ToBgrMat(frame.frame.image);
+  for (const sim::SimulatedFrame& frame : frames) {
+    const cv::Mat3b bgr = io::ToBgrMat(frame.frame.image);
     const cv::Mat1b mask = masker.Mask(bgr, frame.world_T_robot);
     views.push_back({frame.frame.odometry.heading(), vision::ExtractProfile(mask, ipm, max_range)});
   }
@@ -168,7 +169,8 @@ RopResult MakeRop(const RopRequest& request) {
       fmt::format("{}  pose ({:.2f}, {:.2f}, {:.0f} deg)  method {}", world.name(),
                   request.world_T_robot.x(), request.world_T_robot.y(),
                   core::RadToDeg(request.world_T_robot.heading()), MaskSourceName(request.method));
-  WritePng(request.out_path, PlotRadialProfile(result.rop, result.low_pass, result.truth, title));
+  io::WritePng(request.out_path,
+               PlotRadialProfile(result.rop, result.low_pass, result.truth, title));
   return result;
 }
 

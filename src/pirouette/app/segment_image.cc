@@ -6,20 +6,20 @@
 #include <numbers>
 #include <opencv2/imgproc.hpp>
 
-#include "pirouette/app/image_io.h"
-#include "pirouette/camera/camera_file.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/camera_file.h"
+#include "pirouette/io/image_io.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::app {
 
 SegmentImageResult SegmentImage(const SegmentImageRequest& request) {
-  const cv::Mat3b bgr = ToBgrMat(ReadImage(request.image_path));
+  const cv::Mat3b bgr = io::ToBgrMat(io::ReadImage(request.image_path));
   std::optional<camera::CameraModel> camera;
   if (!request.camera_path.empty()) {
-    camera = camera::LoadCameraFile(request.camera_path);
+    camera = io::LoadCameraFile(request.camera_path);
     if (camera->width() != bgr.cols || camera->height() != bgr.rows) {
       throw core::InputError(
           request.image_path, 0, "",
@@ -38,9 +38,9 @@ SegmentImageResult SegmentImage(const SegmentImageRequest& request) {
     const double max_range = request.max_range_m.value_or(camera::MaxRange(*camera, 0.01));
     result.profile = vision::ExtractProfile(result.floor_mask, ipm, max_range);
   }
-  if (!request.mask_path.empty()) WritePng(request.mask_path, result.floor_mask);
+  if (!request.mask_path.empty()) io::WritePng(request.mask_path, result.floor_mask);
   if (!request.overlay_path.empty()) {
-    WritePng(request.overlay_path, DrawFloorOverlay(bgr, result.floor_mask));
+    io::WritePng(request.overlay_path, DrawFloorOverlay(bgr, result.floor_mask));
   }
   return result;
 }

@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "pirouette/app/image_io.h"
 #include "pirouette/app/segment_image.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/sim/ray_caster.h"
 #include "pirouette/sim/renderer.h"
-#include "pirouette/sim/world_file.h"
 
 namespace pirouette::app {
 
@@ -50,7 +50,7 @@ SegmentationEvalResult EvaluateSegmentation(const SegmentationEvalRequest& reque
     const std::filesystem::path dir(request.images_dir);
     const std::string photo_path = (dir / fmt::format("source_{}.bmp", i)).string();
     const std::string truth_path = (dir / fmt::format("gt_source_{}.bmp", i)).string();
-    const cv::Mat3b bgr = ToBgrMat(ReadImage(photo_path));
+    const cv::Mat3b bgr = io::ToBgrMat(io::ReadImage(photo_path));
     if (!std::filesystem::exists(truth_path)) {
       throw core::InputError(truth_path, 0, "", "no such file");
     }
@@ -108,7 +108,7 @@ int BoundaryRow(const cv::Mat1b& mask, int u) {
 
 SegmentationEvalResult EvaluateSimulatedSegmentation(const SimulatedEvalRequest& request) {
   if (request.stops < 0) throw core::InputError("", 0, "stops", "must be 0 or more");
-  const sim::World world = sim::LoadWorldFile(request.world_path);
+  const sim::World world = io::LoadWorldFile(request.world_path);
   const camera::CameraModel& camera = world.robot().camera;
   sim::RenderOptions options;
   options.seed = request.seed;
@@ -134,7 +134,7 @@ SegmentationEvalResult EvaluateSimulatedSegmentation(const SimulatedEvalRequest&
     for (int turn = 0; turn < 12; ++turn) {
       const core::Pose2 world_T_robot(stop.x(), stop.y(),
                                       start_heading + core::DegToRad(30.0 * turn));
-      const cv::Mat3b bgr = ToBgrMat(renderer.Render(world_T_robot));
+      const cv::Mat3b bgr = io::ToBgrMat(renderer.Render(world_T_robot));
       std::vector<std::uint8_t> truth_data = caster.FloorMask(world_T_robot);
       const cv::Mat1b truth(camera.height(), camera.width(), truth_data.data());
       const cv::Mat1b floor_mask = segmenter->Segment(bgr);
@@ -147,9 +147,9 @@ SegmentationEvalResult EvaluateSimulatedSegmentation(const SimulatedEvalRequest&
       if (!request.frames_dir.empty()) {
         const std::filesystem::path dir(request.frames_dir);
         const std::size_t n = result.images.size();
-        WritePng((dir / fmt::format("frame_{}.png", n)).string(),
-                 DrawFloorOverlay(bgr, floor_mask));
-        WritePng((dir / fmt::format("truth_{}.png", n)).string(), truth);
+        io::WritePng((dir / fmt::format("frame_{}.png", n)).string(),
+                     DrawFloorOverlay(bgr, floor_mask));
+        io::WritePng((dir / fmt::format("truth_{}.png", n)).string(), truth);
       }
       score.index = static_cast<int>(result.images.size());
       sum += score.iou;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <string>
 
-#include "pirouette/camera/camera_file.h"
 #include "pirouette/core/angle.h"
+#include "pirouette/io/camera_file.h"
 
 namespace pirouette::camera {
 namespace {
@@ -87,7 +87,7 @@ TEST(RangeResolutionTest, MaxRangeKeepsOnePixelWithinHalfACell) {
 }
 
 TEST(RangeResolutionTest, PaperCameraMaxRangeIsAboutFortyCentimetres) {
-  const CameraModel camera = LoadCameraFile(std::string(PIROUETTE_WORLDS_DIR) + "/yujin.yaml");
+  const CameraModel camera = io::LoadCameraFile(std::string(PIROUETTE_WORLDS_DIR) + "/yujin.yaml");
   const double max_range = MaxRange(camera, 0.01);
   EXPECT_GE(max_range, 0.35);
   EXPECT_LE(max_range, 0.45);

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "pirouette/explore/configuration_space.h"
-#include "pirouette/explore/test_grids.h"
-#include "pirouette/explore/world_raster.h"
+#include "pirouette/testing/test_grids.h"
+#include "pirouette/testing/world_raster.h"
 
 namespace pirouette::explore {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pirouette/explore/test_grids.h"
+#include "pirouette/testing/test_grids.h"
 
 namespace pirouette::explore {
 namespace {

@@ -6,8 +6,8 @@
 
 namespace pirouette::explore {
 
-std::vector<robot::Move> MovesAlong(const core::Pose2& world_T_robot,
-                                    const std::vector<Eigen::Vector2d>& waypoints_world) {
+std::vector<core::Move> MovesAlong(const core::Pose2& world_T_robot,
+                                   const std::vector<Eigen::Vector2d>& waypoints_world) {
   // The legs, merged: each a start and an end.
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> legs;
   Eigen::Vector2d from = world_T_robot.translation();
@@ -26,14 +26,14 @@ std::vector<robot::Move> MovesAlong(const core::Pose2& world_T_robot,
     legs.emplace_back(from, to);
     from = to;
   }
-  std::vector<robot::Move> moves;
+  std::vector<core::Move> moves;
   double heading = world_T_robot.heading();
   for (const auto& [start, end] : legs) {
     const Eigen::Vector2d d = end - start;
     const double direction = std::atan2(d.y(), d.x());
     const double turn = core::NormalizeAngle(direction - heading);
-    if (std::abs(turn) >= kMinTurnRad) moves.push_back(robot::Move::Turn(turn));
-    moves.push_back(robot::Move::Straight(d.norm()));
+    if (std::abs(turn) >= kMinTurnRad) moves.push_back(core::Move::Turn(turn));
+    moves.push_back(core::Move::Straight(d.norm()));
     heading = direction;
   }
   return moves;

@@ -21,7 +21,7 @@ inline constexpr double kCollinearRad = 1e-6;
 // the same direction (within kCollinearRad) are merged into one drive, and
 // legs shorter than kMinStraightM are dropped. `waypoints_world` excludes the
 // robot's own position.
-std::vector<robot::Move> MovesAlong(const core::Pose2& world_T_robot,
-                                    const std::vector<Eigen::Vector2d>& waypoints_world);
+std::vector<core::Move> MovesAlong(const core::Pose2& world_T_robot,
+                                   const std::vector<Eigen::Vector2d>& waypoints_world);
 
 }  // namespace pirouette::explore

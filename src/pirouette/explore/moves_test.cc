@@ -7,7 +7,7 @@
 namespace pirouette::explore {
 namespace {
 
-using robot::Move;
+using core::Move;
 constexpr double kPi = std::numbers::pi;
 
 void ExpectMove(const Move& move, Move::Kind kind, double amount) {

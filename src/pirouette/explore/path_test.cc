@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "pirouette/explore/test_grids.h"
+#include "pirouette/testing/test_grids.h"
 
 namespace pirouette::explore {
 namespace {

@@ -58,7 +58,7 @@ TEST(PlannerTest, LeadsStraightToTheNearestUnknownAndStopsBeforeIt) {
   EXPECT_NEAR(plan->goal_world.x(), 0.21, 1e-12);
   EXPECT_NEAR(plan->length_m, std::hypot(0.02, 0.01) + 0.12, 1e-12);
 
-  const std::vector<robot::Move> moves = MovesAlong(robot, plan->waypoints_world);
+  const std::vector<core::Move> moves = MovesAlong(robot, plan->waypoints_world);
   ASSERT_EQ(moves.size(), 4U);  // turn, the short leg onto the row, turn back, one drive
   EXPECT_NEAR(moves[3].amount, 0.12, 1e-12);
 }

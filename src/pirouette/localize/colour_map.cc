@@ -7,7 +7,7 @@
 
 namespace pirouette::localize {
 
-ColourMap::ColourMap(core::GridGeometry geometry, std::vector<ColourClass> cells)
+ColourMap::ColourMap(core::GridGeometry geometry, std::vector<core::ColourClass> cells)
     : geometry_(std::move(geometry)), cells_(std::move(cells)) {
   if (cells_.size() != geometry_.CellCount()) {
     throw std::invalid_argument("ColourMap: one class a cell of the geometry");
@@ -16,9 +16,9 @@ ColourMap::ColourMap(core::GridGeometry geometry, std::vector<ColourClass> cells
 
 ColourMap ColourMap::FromSightings(const core::GridGeometry& geometry,
                                    const std::vector<ColourSighting>& sightings) {
-  std::vector<std::array<int, kColourClasses>> votes(geometry.CellCount());
+  std::vector<std::array<int, core::kColourClasses>> votes(geometry.CellCount());
   for (const ColourSighting& s : sightings) {
-    if (s.colour == ColourClass::kNone) continue;
+    if (s.colour == core::ColourClass::kNone) continue;
     const core::CellIndex c = geometry.CellOf(s.p_m);
     if (!geometry.Contains(c)) continue;
     for (int dy = -1; dy <= 1; ++dy) {
@@ -29,16 +29,16 @@ ColourMap ColourMap::FromSightings(const core::GridGeometry& geometry,
       }
     }
   }
-  std::vector<ColourClass> cells(geometry.CellCount(), ColourClass::kNone);
+  std::vector<core::ColourClass> cells(geometry.CellCount(), core::ColourClass::kNone);
   for (std::size_t i = 0; i < votes.size(); ++i) {
     const auto best = std::max_element(votes[i].begin(), votes[i].end());
-    if (*best > 0) cells[i] = static_cast<ColourClass>(best - votes[i].begin());
+    if (*best > 0) cells[i] = static_cast<core::ColourClass>(best - votes[i].begin());
   }
   return {geometry, std::move(cells)};
 }
 
-ColourClass ColourMap::At(const core::CellIndex& c) const {
-  if (cells_.empty() || !geometry_.Contains(c)) return ColourClass::kNone;
+core::ColourClass ColourMap::At(const core::CellIndex& c) const {
+  if (cells_.empty() || !geometry_.Contains(c)) return core::ColourClass::kNone;
   return cells_[geometry_.Flat(c)];
 }
 

@@ -3,8 +3,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "pirouette/core/colour_class.h"
 #include "pirouette/core/grid_geometry.h"
-#include "pirouette/localize/colour_class.h"
 
 namespace pirouette::localize {
 
@@ -13,7 +13,7 @@ namespace pirouette::localize {
 // 2005, §5.1's colour ROP, kept on the map).
 struct ColourSighting {
   Eigen::Vector2d p_m = Eigen::Vector2d::Zero();
-  ColourClass colour = ColourClass::kNone;
+  core::ColourClass colour = core::ColourClass::kNone;
 };
 
 // The colours of a map's cells: what a run's camera saw standing on each
@@ -26,7 +26,7 @@ class ColourMap {
   // An empty map: every cell kNone.
   ColourMap() = default;
   // cells must hold geometry.CellCount() classes (std::invalid_argument).
-  ColourMap(core::GridGeometry geometry, std::vector<ColourClass> cells);
+  ColourMap(core::GridGeometry geometry, std::vector<core::ColourClass> cells);
 
   // The map of `sightings` on `geometry`: each sighting votes for its class
   // in its cell and the 8 around it (its own cell twice), so that a wall's
@@ -39,13 +39,13 @@ class ColourMap {
 
   bool empty() const { return cells_.empty(); }
   const core::GridGeometry& geometry() const { return geometry_; }
-  const std::vector<ColourClass>& cells() const { return cells_; }
+  const std::vector<core::ColourClass>& cells() const { return cells_; }
   // kNone off the map and for an empty map.
-  ColourClass At(const core::CellIndex& c) const;
+  core::ColourClass At(const core::CellIndex& c) const;
 
  private:
   core::GridGeometry geometry_{1.0, Eigen::Vector2d::Zero(), 1, 1};
-  std::vector<ColourClass> cells_;
+  std::vector<core::ColourClass> cells_;
 };
 
 }  // namespace pirouette::localize

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "pirouette/localize/test_room.h"
 #include "pirouette/mapping/range_sensor_model.h"
+#include "pirouette/testing/test_room.h"
 
 namespace pirouette::localize {
 namespace {
@@ -15,7 +15,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kCell = 0.01;
 
-using test_room::Frame;
+using testing::Frame;
 
 constexpr double kDeg = kPi / 180.0;
 
@@ -26,7 +26,7 @@ mapping::OccupancyGrid PirouetteMap(const Eigen::Vector2d& at) {
       mapping::OccupancyOptions{.hit_probability = 0.8, .miss_probability = 0.18});
   for (int k = 0; k < 12; ++k) {
     const core::Pose2 pose(at.x(), at.y(), k * kPi / 6.0);
-    mapping::InsertProfile(grid, Frame(pose), pose);
+    mapping::InsertProfile(grid, testing::Frame(pose), pose);
   }
   return grid;
 }
@@ -48,7 +48,7 @@ TEST(HeadingMatcherTest, RecoversAKnownTurn) {
   const mapping::OccupancyGrid grid = PirouetteMap({0.6, 0.7});
   const MapProfile map(grid, {0.6, 0.7}, 1.2);
   for (const double heading : {-2.5, 0.4, 2.0}) {
-    const core::ObstacleProfile profile = Frame(core::Pose2(0.6, 0.7, heading));
+    const core::ObstacleProfile profile = testing::Frame(core::Pose2(0.6, 0.7, heading));
     // The odometry says 2° more than the truth.
     const HeadingMatch match = MatchHeading(map, profile, heading + 2.0 * kDeg, 4.0 * kDeg);
     ASSERT_TRUE(match.accepted) << heading;
@@ -58,8 +58,8 @@ TEST(HeadingMatcherTest, RecoversAKnownTurn) {
 
 TEST(HeadingMatcherTest, AViewFindsItsTurnFromTheViewBefore) {
   const core::Pose2 first(0.6, 0.7, -2.0);
-  const core::ObstacleProfile before = Frame(first);
-  const core::ObstacleProfile after = Frame(core::Pose2(0.6, 0.7, -2.0 + 30.0 * kDeg));
+  const core::ObstacleProfile before = testing::Frame(first);
+  const core::ObstacleProfile after = testing::Frame(core::Pose2(0.6, 0.7, -2.0 + 30.0 * kDeg));
   // The odometry says the turn was 31°.
   const HeadingMatch match =
       MatchToViews({{&before, first.heading()}}, after, first.heading() + 31.0 * kDeg, 2.5 * kDeg);
@@ -69,9 +69,9 @@ TEST(HeadingMatcherTest, AViewFindsItsTurnFromTheViewBefore) {
 
 TEST(HeadingMatcherTest, TooLittleOverlapKeepsThePrediction) {
   const core::Pose2 first(0.6, 0.7, 0.0);
-  const core::ObstacleProfile before = Frame(first);
+  const core::ObstacleProfile before = testing::Frame(first);
   // 90° on: the views do not overlap.
-  const core::ObstacleProfile after = Frame(core::Pose2(0.6, 0.7, kPi / 2.0));
+  const core::ObstacleProfile after = testing::Frame(core::Pose2(0.6, 0.7, kPi / 2.0));
   const HeadingMatch match = MatchToViews({{&before, 0.0}}, after, kPi / 2.0, 2.0 * kDeg);
   EXPECT_FALSE(match.accepted);
   EXPECT_DOUBLE_EQ(match.offset_rad, 0.0);

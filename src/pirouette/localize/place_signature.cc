@@ -22,21 +22,21 @@ double LogScaled(double h) {
   return std::copysign(std::log10(std::abs(h)), h);
 }
 
-bool Coloured(const ColourClass c) { return c != ColourClass::kNone; }
+bool Coloured(const core::ColourClass c) { return c != core::ColourClass::kNone; }
 
 // Whether two colour classes disagree: a hue against no hue, or hues more
 // than one class apart. Black, white and grey agree (light and shading move a
 // white wall between them), as do neighbouring hues (shading moves a hue by
 // a class).
-bool Disagree(ColourClass a, ColourClass b) {
+bool Disagree(core::ColourClass a, core::ColourClass b) {
   const int ia = static_cast<int>(a);
   const int ib = static_cast<int>(b);
-  const bool hue_a = ia < kHueClasses;
-  const bool hue_b = ib < kHueClasses;
+  const bool hue_a = ia < core::kHueClasses;
+  const bool hue_b = ib < core::kHueClasses;
   if (hue_a != hue_b) return true;
   if (!hue_a) return false;
   const int d = std::abs(ia - ib);
-  return std::min(d, kHueClasses - d) > 1;
+  return std::min(d, core::kHueClasses - d) > 1;
 }
 
 }  // namespace
@@ -140,7 +140,7 @@ ColourSignature MakeColourSignature(const PlaceView& view) {
   ColourSignature s;
   s.fourier = FourierSignature(view.ranges_m);
   if (view.colours.empty()) return s;
-  for (const ColourClass c : view.colours) {
+  for (const core::ColourClass c : view.colours) {
     if (Coloured(c)) s.histogram[static_cast<std::size_t>(c)] += 1.0;
   }
   for (double& h : s.histogram) h /= static_cast<double>(view.colours.size());
@@ -193,8 +193,8 @@ Alignment AlignProfiles(const PlaceView& query, const PlaceView& reference, bool
       const double d = query.ranges_m[b] - reference.ranges_m[r];
       sum += d * d;
       if (colour) {
-        const ColourClass qc = query.colours[b];
-        const ColourClass rc = reference.colours[r];
+        const core::ColourClass qc = query.colours[b];
+        const core::ColourClass rc = reference.colours[r];
         if (Coloured(qc) && Coloured(rc)) {
           ++both;
           differ += Disagree(qc, rc) ? 1 : 0;
@@ -221,7 +221,7 @@ PlaceView Reproject(const PlaceView& view, const Eigen::Vector2d& origin_m, doub
   const bool coloured = static_cast<int>(view.colours.size()) == n;
   PlaceView out;
   out.ranges_m.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
-  if (coloured) out.colours.assign(static_cast<std::size_t>(n), ColourClass::kNone);
+  if (coloured) out.colours.assign(static_cast<std::size_t>(n), core::ColourClass::kNone);
   const double bins_per_rad = n / (2.0 * std::numbers::pi);
   for (int b = 0; b < n; ++b) {
     const double r = view.ranges_m[b];
@@ -243,7 +243,7 @@ PlaceView Reproject(const PlaceView& view, const Eigen::Vector2d& origin_m, doub
     if (std::isfinite(out.ranges_m[b])) filled.push_back(b);
   }
   std::vector<double> ranges = out.ranges_m;
-  std::vector<ColourClass> colours = out.colours;
+  std::vector<core::ColourClass> colours = out.colours;
   for (std::size_t i = 0; i < filled.size(); ++i) {
     const int a = filled[i];
     const int b = filled[(i + 1) % filled.size()];

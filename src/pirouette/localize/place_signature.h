@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-#include "pirouette/localize/colour_class.h"
+#include "pirouette/core/colour_class.h"
 
 namespace pirouette::localize {
 
@@ -16,8 +16,8 @@ namespace pirouette::localize {
 // robot's heading at the pirouette's start), and the colour class of what
 // each bearing hit (Taylor, Geva & Boles 2005, §5.1's colour ROP).
 struct PlaceView {
-  std::vector<double> ranges_m;      // kRadialProfileBins, each in [0, max range]
-  std::vector<ColourClass> colours;  // kRadialProfileBins, or empty (no colour)
+  std::vector<double> ranges_m;            // kRadialProfileBins, each in [0, max range]
+  std::vector<core::ColourClass> colours;  // kRadialProfileBins, or empty (no colour)
 };
 
 // The signatures of a place that `pirouette places` measures.
@@ -68,7 +68,7 @@ std::vector<double> FourierSignature(const std::vector<double>& ranges_m,
 // (kColourClasses of them, kNone left out), both heading-invariant.
 struct ColourSignature {
   std::vector<double> fourier;
-  std::array<double, kColourClasses> histogram{};
+  std::array<double, core::kColourClasses> histogram{};
 };
 ColourSignature MakeColourSignature(const PlaceView& view);
 

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "pirouette/core/angle.h"
-#include "pirouette/localize/test_places.h"
 #include "pirouette/mapping/radial_profile.h"
+#include "pirouette/testing/test_places.h"
 
 namespace pirouette::localize {
 namespace {
@@ -22,17 +22,17 @@ PlaceView RoomView(double px, double py, double heading_deg, double w = 1.5, dou
   for (int b = 0; b < kBins; ++b) {
     const double a = core::DegToRad(heading_deg + b + 0.5);
     const double c = std::cos(a), s = std::sin(a);
-    const double t = test_places::WallRange(px, py, a, w, h);
+    const double t = testing::WallRange(px, py, a, w, h);
     const double range = std::min(t, 1.2);
     view.ranges_m.push_back(range);
     const double hx = px + t * c;
     const double hy = py + t * s;
     // A red stretch of the top wall, x in [0.2, 0.6]; the rest is white.
-    ColourClass colour = ColourClass::kWhite;
+    core::ColourClass colour = core::ColourClass::kWhite;
     if (t > 1.2) {
-      colour = ColourClass::kNone;
+      colour = core::ColourClass::kNone;
     } else if (std::abs(hy - h) < 1e-6 && hx > 0.2 && hx < 0.6) {
-      colour = ColourClass::kHue0;
+      colour = core::ColourClass::kHue0;
     }
     view.colours.push_back(colour);
   }
@@ -146,7 +146,7 @@ TEST(PlaceSignatureTest, ColourHistogramCountsTheBearings) {
   double total = 0.0;
   for (double h : s.histogram) total += h;
   EXPECT_NEAR(total, 1.0, 1e-9);  // every bearing hits a wall within 1.2 m
-  EXPECT_GT(s.histogram[static_cast<int>(ColourClass::kHue0)], 0.0);
+  EXPECT_GT(s.histogram[static_cast<int>(core::ColourClass::kHue0)], 0.0);
 }
 
 }  // namespace

@@ -5,14 +5,14 @@
 #include <cmath>
 
 #include "pirouette/core/angle.h"
-#include "pirouette/localize/test_places.h"
 #include "pirouette/mapping/radial_profile.h"
+#include "pirouette/testing/test_places.h"
 
 namespace pirouette::localize {
 namespace {
 
-using test_places::Grid;
-using test_places::View;
+using testing::Grid;
+using testing::View;
 
 TEST(PlaceTableTest, ARotatedQueryFindsItsPlaceAndHeading) {
   const PlaceTable table = Grid();

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "pirouette/localize/test_room.h"
 #include "pirouette/mapping/range_sensor_model.h"
+#include "pirouette/testing/test_room.h"
 
 namespace pirouette::localize {
 namespace {
@@ -15,7 +15,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kCell = 0.01;
 
-using test_room::Frame;
+using testing::Frame;
 
 mapping::OccupancyGrid EmptyGrid() {
   return mapping::OccupancyGrid(
@@ -50,13 +50,13 @@ std::pair<double, double> Track(const std::vector<core::Pose2>& truth,
   double worst_deg = 0.0;
   double worst_m = 0.0;
   for (std::size_t i = 0; i < truth.size(); ++i) {
-    const core::ObstacleProfile profile = ReadTo(Frame(truth[i]), map_range_m);
+    const core::ObstacleProfile profile = ReadTo(testing::Frame(truth[i]), map_range_m);
     if (tracker.StartsStop(odometry[i])) {
       before = grid;
       stop.clear();
     }
-    const std::vector<core::Pose2> poses =
-        tracker.Track(before, ReadTo(Frame(truth[i]), view_range_m), map_range_m, odometry[i]);
+    const std::vector<core::Pose2> poses = tracker.Track(
+        before, ReadTo(testing::Frame(truth[i]), view_range_m), map_range_m, odometry[i]);
     stop.push_back(profile);
     grid = before;
     for (std::size_t k = 0; k < stop.size(); ++k) mapping::InsertProfile(grid, stop[k], poses[k]);

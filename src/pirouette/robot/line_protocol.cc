@@ -148,8 +148,8 @@ Request ParseRequest(std::string_view line) {
 
 std::string FormatHelloReply() { return fmt::format("OK {}\n", kProtocolVersion); }
 
-std::string FormatMoveReply(const MoveOutcome& outcome) {
-  const std::string achieved = outcome.requested.kind == Move::Kind::kTurn
+std::string FormatMoveReply(const core::MoveOutcome& outcome) {
+  const std::string achieved = outcome.requested.kind == core::Move::Kind::kTurn
                                    ? FormatDegrees(outcome.achieved)
                                    : Decimal(outcome.achieved);
   return fmt::format("OK {} {} {}\n", achieved, PoseWords(outcome.odometry),
@@ -182,15 +182,16 @@ void ParseHelloReply(std::string_view line) {
   }
 }
 
-MoveOutcome ParseMoveReply(std::string_view line, const Move& requested) {
+core::MoveOutcome ParseMoveReply(std::string_view line, const core::Move& requested) {
   const std::vector<std::string_view> words = Words(line);
   if (words.size() != 6 || words[0] != "OK" || (words[5] != "0" && words[5] != "1")) {
     Garbage(kMoveReplyForm, line);
   }
-  MoveOutcome outcome;
+  core::MoveOutcome outcome;
   outcome.requested = requested;
-  outcome.achieved = requested.kind == Move::Kind::kTurn ? Degrees(words[1], kMoveReplyForm, line)
-                                                         : Number(words[1], kMoveReplyForm, line);
+  outcome.achieved = requested.kind == core::Move::Kind::kTurn
+                         ? Degrees(words[1], kMoveReplyForm, line)
+                         : Number(words[1], kMoveReplyForm, line);
   outcome.odometry = Pose(words[2], words[3], words[4], kMoveReplyForm, line);
   outcome.stopped_at_contact = words[5] == "1";
   return outcome;

@@ -53,8 +53,8 @@ struct Request {
   static Request Hello() { return {Kind::kHello, 0.0, std::string(kProtocolVersion)}; }
   static Request Capture() { return {Kind::kCapture, 0.0, {}}; }
   static Request Odometry() { return {Kind::kOdometry, 0.0, {}}; }
-  static Request FromMove(const Move& move) {
-    return {move.kind == Move::Kind::kTurn ? Kind::kTurn : Kind::kMove, move.amount, {}};
+  static Request FromMove(const core::Move& move) {
+    return {move.kind == core::Move::Kind::kTurn ? Kind::kTurn : Kind::kMove, move.amount, {}};
   }
 };
 
@@ -79,7 +79,7 @@ struct FrameHeader {
 
 // Replies, each one line with its '\n'.
 std::string FormatHelloReply();
-std::string FormatMoveReply(const MoveOutcome& outcome);
+std::string FormatMoveReply(const core::MoveOutcome& outcome);
 std::string FormatFrameHeader(const Frame& frame);
 std::string FormatOdometryReply(const core::Pose2& odom_T_robot);
 // "ERR <message>", the message on one line (line breaks become spaces).
@@ -88,7 +88,7 @@ std::string FormatErrorReply(std::string_view message);
 // Parsers of the replies (line without its '\n'). ParseMoveReply fills in
 // `requested` and reads `achieved` in its unit (radians for a turn).
 void ParseHelloReply(std::string_view line);
-MoveOutcome ParseMoveReply(std::string_view line, const Move& requested);
+core::MoveOutcome ParseMoveReply(std::string_view line, const core::Move& requested);
 FrameHeader ParseFrameHeader(std::string_view line);
 core::Pose2 ParseOdometryReply(std::string_view line);
 // The message of an "ERR <message>" line; nullopt for any other line.

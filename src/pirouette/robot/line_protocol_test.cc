@@ -24,8 +24,8 @@ std::string Chomp(std::string line) {
 }
 
 TEST(LineProtocolTest, RequestsAreWrittenInDegreesAndMetres) {
-  EXPECT_EQ(FormatRequest(Request::FromMove(Move::Turn(std::numbers::pi / 2))), "TURN 90\n");
-  EXPECT_EQ(FormatRequest(Request::FromMove(Move::Straight(-0.25))), "MOVE -0.25\n");
+  EXPECT_EQ(FormatRequest(Request::FromMove(core::Move::Turn(std::numbers::pi / 2))), "TURN 90\n");
+  EXPECT_EQ(FormatRequest(Request::FromMove(core::Move::Straight(-0.25))), "MOVE -0.25\n");
   EXPECT_EQ(FormatRequest(Request::Capture()), "CAPTURE\n");
   EXPECT_EQ(FormatRequest(Request::Odometry()), "ODOM\n");
   EXPECT_EQ(FormatRequest(Request::Hello()), "HELLO pirouette-robot/1\n");
@@ -33,13 +33,14 @@ TEST(LineProtocolTest, RequestsAreWrittenInDegreesAndMetres) {
 
 TEST(LineProtocolTest, RequestsRoundTripExactly) {
   for (const double radians : {0.5236, -0.5236, std::numbers::pi / 6, -3.0, 1e-12, 0.0, 12.5}) {
-    const Request read = ParseRequest(Chomp(FormatRequest(Request::FromMove(Move::Turn(radians)))));
+    const Request read =
+        ParseRequest(Chomp(FormatRequest(Request::FromMove(core::Move::Turn(radians)))));
     EXPECT_EQ(read.kind, Request::Kind::kTurn);
     EXPECT_EQ(read.amount, radians);
   }
   for (const double metres : {0.1, -0.3, 1.0 / 3.0, 0.0}) {
     const Request read =
-        ParseRequest(Chomp(FormatRequest(Request::FromMove(Move::Straight(metres)))));
+        ParseRequest(Chomp(FormatRequest(Request::FromMove(core::Move::Straight(metres)))));
     EXPECT_EQ(read.kind, Request::Kind::kMove);
     EXPECT_EQ(read.amount, metres);
   }
@@ -93,13 +94,13 @@ TEST(LineProtocolTest, DegreesAreShortAndReadBackBitExactly) {
 }
 
 TEST(LineProtocolTest, MoveRepliesRoundTripExactly) {
-  MoveOutcome turn;
-  turn.requested = Move::Turn(0.5236);
+  core::MoveOutcome turn;
+  turn.requested = core::Move::Turn(0.5236);
   turn.achieved = 0.5236;
   turn.odometry = core::Pose2(0.1 + 0.2, -1.0 / 3.0, 2.5);
   const std::string turn_line = FormatMoveReply(turn);
-  const MoveOutcome turn_read = ParseMoveReply(Chomp(turn_line), turn.requested);
-  EXPECT_EQ(turn_read.requested.kind, Move::Kind::kTurn);
+  const core::MoveOutcome turn_read = ParseMoveReply(Chomp(turn_line), turn.requested);
+  EXPECT_EQ(turn_read.requested.kind, core::Move::Kind::kTurn);
   EXPECT_EQ(turn_read.requested.amount, 0.5236);
   EXPECT_EQ(turn_read.achieved, 0.5236);
   EXPECT_EQ(turn_read.odometry.x(), turn.odometry.x());
@@ -107,14 +108,14 @@ TEST(LineProtocolTest, MoveRepliesRoundTripExactly) {
   EXPECT_EQ(turn_read.odometry.heading(), turn.odometry.heading());
   EXPECT_FALSE(turn_read.stopped_at_contact);
 
-  MoveOutcome blocked;
-  blocked.requested = Move::Straight(0.5);
+  core::MoveOutcome blocked;
+  blocked.requested = core::Move::Straight(0.5);
   blocked.achieved = 0.123456789;
   blocked.stopped_at_contact = true;
   blocked.odometry = core::Pose2(1.5, 0.25, -std::numbers::pi / 2);
   const std::string blocked_line = FormatMoveReply(blocked);
   EXPECT_EQ(blocked_line, "OK 0.123456789 1.5 0.25 -90 1\n");
-  const MoveOutcome blocked_read = ParseMoveReply(Chomp(blocked_line), blocked.requested);
+  const core::MoveOutcome blocked_read = ParseMoveReply(Chomp(blocked_line), blocked.requested);
   EXPECT_EQ(blocked_read.achieved, 0.123456789);
   EXPECT_TRUE(blocked_read.stopped_at_contact);
   EXPECT_EQ(blocked_read.odometry.heading(), -std::numbers::pi / 2);
@@ -144,7 +145,7 @@ TEST(LineProtocolTest, FrameHeadersAndOdometryRoundTripExactly) {
 }
 
 TEST(LineProtocolTest, GarbageRepliesAreRefused) {
-  const Move turn = Move::Turn(1.0);
+  const core::Move turn = core::Move::Turn(1.0);
   EXPECT_THROW(ParseMoveReply("OK 1 2 3 4", turn), RobotError);
   EXPECT_THROW(ParseMoveReply("OK 1 2 3 4 2", turn), RobotError);
   EXPECT_THROW(ParseMoveReply("YES 1 2 3 4 0", turn), RobotError);

@@ -82,9 +82,9 @@ RemoteRobot::RemoteRobot(const RobotAddress& address, const RemoteRobotOptions& 
   CheckOdometry(odometry_, "ODOM");
 }
 
-MoveOutcome RemoteRobot::Execute(const Move& move) {
+core::MoveOutcome RemoteRobot::Execute(const core::Move& move) {
   const Request request = Request::FromMove(move);
-  MoveOutcome outcome = ParseReply(
+  core::MoveOutcome outcome = ParseReply(
       request, Ask(request), [&move](std::string_view line) { return ParseMoveReply(line, move); });
   CheckOdometry(outcome.odometry, CommandName(request.kind));
   odometry_ = outcome.odometry;

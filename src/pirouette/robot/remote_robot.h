@@ -56,7 +56,7 @@ class RemoteRobot : public Robot {
 
   // Angles of moves are radians (as everywhere inside the code); the wire
   // carries degrees.
-  MoveOutcome Execute(const Move& move) override;
+  core::MoveOutcome Execute(const core::Move& move) override;
   Frame Capture() override;
   core::Pose2 Odometry() const override { return odometry_; }
 

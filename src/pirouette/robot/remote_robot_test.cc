@@ -16,10 +16,10 @@
 #include <utility>
 
 #include "pirouette/core/input_error.h"
-#include "pirouette/robot/fake_robot.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
 #include "pirouette/robot/tcp_connection.h"
+#include "pirouette/testing/fake_robot.h"
 
 namespace pirouette::robot {
 namespace {
@@ -147,8 +147,8 @@ TEST(ParseRobotUrlTest, RefusesAnythingElseNamingTheOption) {
 }
 
 TEST(RemoteRobotTest, DrivesARobotServerBitExactly) {
-  FakeRobot served(64, 48);
-  FakeRobot twin(64, 48);  // the same robot driven in-process
+  testing::FakeRobot served(64, 48);
+  testing::FakeRobot twin(64, 48);  // the same robot driven in-process
   served.contact_after_m = twin.contact_after_m = 0.4;
   RobotServerOptions options;
   options.port = 0;
@@ -157,14 +157,21 @@ TEST(RemoteRobotTest, DrivesARobotServerBitExactly) {
 
   RemoteRobot remote(fmt::format("tcp://127.0.0.1:{}", server.port()));
   ExpectSamePose(remote.Odometry(), twin.Odometry());
-  const std::vector<Move> moves = {
-      Move::Turn(0.5236),    Move::Straight(0.3), Move::Turn(-1.234567891),
-      Move::Straight(-0.05), Move::Turn(0.5236),  Move::Turn(0.5236),
-      Move::Turn(0.5236),    Move::Straight(2.0), Move::Turn(std::numbers::pi / 6),
-      Move::Straight(1e-7),  Move::Turn(-7.0),    Move::Straight(0.1 + 0.2)};
-  for (const Move& move : moves) {
-    const MoveOutcome outcome = remote.Execute(move);
-    const MoveOutcome expected = twin.Execute(move);
+  const std::vector<core::Move> moves = {core::Move::Turn(0.5236),
+                                         core::Move::Straight(0.3),
+                                         core::Move::Turn(-1.234567891),
+                                         core::Move::Straight(-0.05),
+                                         core::Move::Turn(0.5236),
+                                         core::Move::Turn(0.5236),
+                                         core::Move::Turn(0.5236),
+                                         core::Move::Straight(2.0),
+                                         core::Move::Turn(std::numbers::pi / 6),
+                                         core::Move::Straight(1e-7),
+                                         core::Move::Turn(-7.0),
+                                         core::Move::Straight(0.1 + 0.2)};
+  for (const core::Move& move : moves) {
+    const core::MoveOutcome outcome = remote.Execute(move);
+    const core::MoveOutcome expected = twin.Execute(move);
     EXPECT_EQ(outcome.requested.kind, move.kind);
     EXPECT_EQ(outcome.requested.amount, move.amount);
     EXPECT_EQ(outcome.achieved, expected.achieved);
@@ -181,11 +188,11 @@ TEST(RemoteRobotTest, DrivesARobotServerBitExactly) {
     ExpectSamePose(frame.odometry, expected_frame.odometry);
     EXPECT_EQ(frame.time_s, expected_frame.time_s);
   }
-  EXPECT_TRUE(twin.Execute(Move::Straight(2.0)).stopped_at_contact);
+  EXPECT_TRUE(twin.Execute(core::Move::Straight(2.0)).stopped_at_contact);
 }
 
 TEST(RemoteRobotTest, AnErrReplyIsARobotErrorAndLaterCallsFail) {
-  FakeRobot served(8, 8);
+  testing::FakeRobot served(8, 8);
   served.fail_capture = true;
   RobotServerOptions options;
   options.port = 0;
@@ -196,14 +203,14 @@ TEST(RemoteRobotTest, AnErrReplyIsARobotErrorAndLaterCallsFail) {
   EXPECT_THAT(
       ErrorOf([&] { remote.Capture(); }),
       AllOf(HasSubstr(where), HasSubstr("refused CAPTURE"), HasSubstr("the camera is unplugged")));
-  EXPECT_THAT(ErrorOf([&] { remote.Execute(Move::Turn(1.0)); }),
+  EXPECT_THAT(ErrorOf([&] { remote.Execute(core::Move::Turn(1.0)); }),
               AllOf(HasSubstr(where), HasSubstr("closed after an earlier error")));
 }
 
 TEST(RemoteRobotTest, ARefusedConnectionNamesTheAddress) {
   int port = 0;
   {
-    FakeRobot unused(1, 1);
+    testing::FakeRobot unused(1, 1);
     RobotServerOptions options;
     options.port = 0;
     const RobotServer closed_again(unused, options);
@@ -235,7 +242,7 @@ TEST(RemoteRobotTest, AConnectionDroppedBeforeTheReplyIsARobotError) {
     connection.Close();
   });
   RemoteRobot remote(server.url());
-  EXPECT_THAT(ErrorOf([&] { remote.Execute(Move::Turn(std::numbers::pi / 2)); }),
+  EXPECT_THAT(ErrorOf([&] { remote.Execute(core::Move::Turn(std::numbers::pi / 2)); }),
               HasSubstr("dropped the connection without answering TURN 90"));
 }
 
@@ -247,7 +254,7 @@ TEST(RemoteRobotTest, GarbageIsARobotErrorThatQuotesIt) {
     WaitForClose(connection);
   });
   RemoteRobot remote(server.url());
-  EXPECT_THAT(ErrorOf([&] { remote.Execute(Move::Straight(0.5)); }),
+  EXPECT_THAT(ErrorOf([&] { remote.Execute(core::Move::Straight(0.5)); }),
               AllOf(HasSubstr(fmt::format("127.0.0.1:{}", server.port())),
                     HasSubstr("answered MOVE with garbage"), HasSubstr("'OK forward march'")));
 }

@@ -163,10 +163,10 @@ bool RobotServer::Answer(TcpConnection& client, const std::string& line) {
                                                    request.version));
         break;
       case Request::Kind::kTurn:
-        reply = FormatMoveReply(robot_.Execute(Move::Turn(request.amount)));
+        reply = FormatMoveReply(robot_.Execute(core::Move::Turn(request.amount)));
         break;
       case Request::Kind::kMove:
-        reply = FormatMoveReply(robot_.Execute(Move::Straight(request.amount)));
+        reply = FormatMoveReply(robot_.Execute(core::Move::Straight(request.amount)));
         break;
       case Request::Kind::kCapture:
         frame = robot_.Capture();

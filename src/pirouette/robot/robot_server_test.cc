@@ -8,9 +8,9 @@
 #include <thread>
 #include <vector>
 
-#include "pirouette/robot/fake_robot.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/tcp_connection.h"
+#include "pirouette/testing/fake_robot.h"
 
 namespace pirouette::robot {
 namespace {
@@ -61,14 +61,14 @@ class Serving {
 };
 
 TEST(RobotServerTest, ReportsThePortItPicked) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   const RobotServer server(robot, AnyPort());
   EXPECT_GT(server.port(), 0);
   EXPECT_EQ(server.address(), "127.0.0.1:" + std::to_string(server.port()));
 }
 
 TEST(RobotServerTest, APortInUseIsARobotErrorThatSaysSo) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   const RobotServer first(robot, AnyPort());
   RobotServerOptions same;
   same.port = first.port();
@@ -82,7 +82,7 @@ TEST(RobotServerTest, APortInUseIsARobotErrorThatSaysSo) {
 }
 
 TEST(RobotServerTest, AnswersEveryRequest) {
-  FakeRobot robot(4, 2);
+  testing::FakeRobot robot(4, 2);
   RobotServer server(robot, AnyPort());
   const Serving serving(server);
   Client client(server.port());
@@ -99,7 +99,7 @@ TEST(RobotServerTest, AnswersEveryRequest) {
 }
 
 TEST(RobotServerTest, AMalformedRequestIsAnsweredWithErrAndServingGoesOn) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   RobotServer server(robot, AnyPort());
   const Serving serving(server);
   Client client(server.port());
@@ -110,7 +110,7 @@ TEST(RobotServerTest, AMalformedRequestIsAnsweredWithErrAndServingGoesOn) {
 }
 
 TEST(RobotServerTest, ARobotThatThrowsIsAnsweredWithErr) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   robot.fail_capture = true;
   RobotServer server(robot, AnyPort());
   const Serving serving(server);
@@ -120,7 +120,7 @@ TEST(RobotServerTest, ARobotThatThrowsIsAnsweredWithErr) {
 }
 
 TEST(RobotServerTest, ServesOneClientAtATimeAndTheNextAfterIt) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   std::mutex mutex;
   std::vector<std::string> log;
   RobotServerOptions options = AnyPort();
@@ -144,7 +144,7 @@ TEST(RobotServerTest, ServesOneClientAtATimeAndTheNextAfterIt) {
 }
 
 TEST(RobotServerTest, AnOverlongLineClosesTheClientButNotTheServer) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   RobotServer server(robot, AnyPort());
   const Serving serving(server);
   {
@@ -156,7 +156,7 @@ TEST(RobotServerTest, AnOverlongLineClosesTheClientButNotTheServer) {
 }
 
 TEST(RobotServerTest, StopEndsServePromptlyEvenWithAClientConnected) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   RobotServer server(robot, AnyPort());
   std::thread thread([&server] { server.Serve(); });
   Client client(server.port());
@@ -168,7 +168,7 @@ TEST(RobotServerTest, StopEndsServePromptlyEvenWithAClientConnected) {
 }
 
 TEST(RobotServerTest, AnExternalStopFlagEndsServe) {
-  FakeRobot robot(2, 2);
+  testing::FakeRobot robot(2, 2);
   std::atomic<bool> stop{false};
   RobotServerOptions options = AnyPort();
   options.stop_requested = &stop;

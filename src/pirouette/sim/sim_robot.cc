@@ -173,7 +173,8 @@ double StandardNormal(std::mt19937_64& rng) {
 SimRobot::SimRobot(const World& world, std::uint64_t seed, View view)
     : SimRobot(world, seed, std::move(view), world.robot().odometry_noise) {}
 
-SimRobot::SimRobot(const World& world, std::uint64_t seed, View view, const OdometryNoise& noise)
+SimRobot::SimRobot(const World& world, std::uint64_t seed, View view,
+                   const core::OdometryNoise& noise)
     : world_(world),
       noise_(noise),
       view_(std::move(view)),
@@ -185,10 +186,10 @@ SimRobot::SimRobot(const World& world, std::uint64_t seed, View view, const Odom
 
 // One standard normal is drawn per move whatever the noise, so that the
 // stream of draws, and so the trajectory for a seed, does not depend on it.
-robot::MoveOutcome SimRobot::Execute(const robot::Move& move) {
-  robot::MoveOutcome outcome;
+core::MoveOutcome SimRobot::Execute(const core::Move& move) {
+  core::MoveOutcome outcome;
   outcome.requested = move;
-  if (move.kind == robot::Move::Kind::kTurn) {
+  if (move.kind == core::Move::Kind::kTurn) {
     const double epsilon = noise_.rotation_bias + noise_.rotation * StandardNormal(rng_);
     const double true_angle = move.amount * (1.0 + epsilon);
     world_T_robot_ =

@@ -27,9 +27,9 @@ class SimRobot : public robot::Robot {
 
   SimRobot(const World& world, std::uint64_t seed, View view);
   // The same with another motion error than the world file's.
-  SimRobot(const World& world, std::uint64_t seed, View view, const OdometryNoise& noise);
+  SimRobot(const World& world, std::uint64_t seed, View view, const core::OdometryNoise& noise);
 
-  robot::MoveOutcome Execute(const robot::Move& move) override;
+  core::MoveOutcome Execute(const core::Move& move) override;
   robot::Frame Capture() override;
   core::Pose2 Odometry() const override { return odom_T_robot_; }
 
@@ -38,7 +38,7 @@ class SimRobot : public robot::Robot {
 
  private:
   const World& world_;
-  OdometryNoise noise_;
+  core::OdometryNoise noise_;
   View view_;
   std::mt19937_64 rng_;
   core::Pose2 world_T_robot_;

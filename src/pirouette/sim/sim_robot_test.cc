@@ -12,8 +12,8 @@
 namespace pirouette::sim {
 namespace {
 
-using robot::Move;
-using robot::MoveOutcome;
+using core::Move;
+using core::MoveOutcome;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kRadius = 0.1;
@@ -26,7 +26,8 @@ camera::CameraModel TestCamera() {
 
 // A 2 × 1.5 floor with a box [1.0, 1.2] × [0.6, 0.9]; the robot, radius 0.1,
 // starts at (0.5, 0.75) facing east.
-World BoxWorld(OdometryNoise noise = {}, const core::Pose2& start = core::Pose2(0.5, 0.75, 0.0)) {
+World BoxWorld(core::OdometryNoise noise = {},
+               const core::Pose2& start = core::Pose2(0.5, 0.75, 0.0)) {
   std::vector<Solid> obstacles = {MakeBox({1.1, 0.75}, {0.2, 0.3}, 0.0, 0.1, kGrey)};
   return World("box", Floor{{2.0, 1.5}, kGrey, 0.0}, std::nullopt, std::move(obstacles), Light{},
                RobotSpec{start, kRadius, TestCamera(), noise});
@@ -230,7 +231,7 @@ TEST(SimRobotTest, ContactWithNoiseReportsTheEncoderDistance) {
 // Wheels that drift one way: the body moves and turns by the bias more than
 // the encoders say, every time.
 TEST(SimRobotTest, BiasesScaleEveryMoveTheSameWay) {
-  OdometryNoise noise;
+  core::OdometryNoise noise;
   noise.translation_bias = 0.02;
   noise.rotation_bias = -0.05;
   const World world = BoxWorld(noise, core::Pose2(0.3, 0.3, 0.0));
@@ -242,7 +243,7 @@ TEST(SimRobotTest, BiasesScaleEveryMoveTheSameWay) {
   EXPECT_NEAR(robot.TruePose().heading(), 0.95, 1e-12);
   EXPECT_NEAR(robot.Odometry().heading(), 1.0, 1e-12);
   // The world file's noise can be overridden.
-  SimRobot exact(world, 1, EmptyView(), OdometryNoise{});
+  SimRobot exact(world, 1, EmptyView(), core::OdometryNoise{});
   exact.Execute(Move::Straight(0.2));
   ExpectPose(exact.TruePose(), 0.5, 0.3, 0.0);
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pirouette/camera/camera_model.h"
+#include "pirouette/core/odometry_noise.h"
 #include "pirouette/core/pose2.h"
 #include "pirouette/core/rgb.h"
 
@@ -29,19 +30,6 @@ struct Light {
   double ambient = 0.45;                         // 0..1
   Eigen::Vector3d direction = {0.3, 0.2, -1.0};  // the way the light travels (not normalised)
   double intensity = 0.6;                        // 0..1
-};
-
-// The simulator's motion error: standard deviations as fractions of each
-// straight move's length and of each turn's angle.
-// The simulated robot's motion error, as fractions of each move: a straight
-// move of d drives d·(1 + translation_bias + ε_t), a turn by θ turns
-// θ·(1 + rotation_bias + ε_r), ε ~ N(0, translation | rotation). The biases
-// model wheels that drift one way (a wheel a little larger than the other).
-struct OdometryNoise {
-  double translation = 0.0;       // standard deviation, >= 0
-  double rotation = 0.0;          // standard deviation, >= 0
-  double translation_bias = 0.0;  // in [-0.5, 0.5]
-  double rotation_bias = 0.0;     // in [-0.5, 0.5]
 };
 
 struct Circle {
@@ -93,7 +81,7 @@ struct RobotSpec {
   core::Pose2 start;  // world_T_robot at the start
   double radius = 0.0;
   camera::CameraModel camera;
-  OdometryNoise odometry_noise;
+  core::OdometryNoise odometry_noise;
 };
 
 // A world: the floor, what stands on it, the light and the robot. The

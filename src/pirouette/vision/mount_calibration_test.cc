@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/testing/test_camera.h"
 #include "pirouette/vision/intrinsics_calibration.h"
-#include "pirouette/vision/test_camera.h"
 
 namespace pirouette::vision {
 namespace {
@@ -46,7 +46,7 @@ MountCalibrationOptions Options(double distance) {
 }
 
 TEST(MountCalibrationTest, RecoversHeightTiltAndForward) {
-  const camera::CameraModel camera = PaperCamera();  // 0.11 m, 30°, 0.03 m
+  const camera::CameraModel camera = testing::PaperCamera();  // 0.11 m, 30°, 0.03 m
   for (const double yaw : {0.0, 0.5, 1.5708}) {
     const MountCalibration m =
         CalibrateMount(SeenCorners(camera, 0.30, yaw, 0.0, 0.0), camera, Options(0.30));
@@ -60,7 +60,7 @@ TEST(MountCalibrationTest, RecoversHeightTiltAndForward) {
 }
 
 TEST(MountCalibrationTest, NoisyCornersStayWithinAMillimetreAndATenthOfADegree) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const MountCalibration m =
       CalibrateMount(SeenCorners(camera, 0.30, 0.2, 0.0, 0.1), camera, Options(0.30));
   EXPECT_NEAR(m.mount.height_m, 0.11, 0.001);
@@ -69,7 +69,7 @@ TEST(MountCalibrationTest, NoisyCornersStayWithinAMillimetreAndATenthOfADegree) 
 }
 
 TEST(MountCalibrationTest, ThicknessOfTheBoardIsAddedToTheHeight) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   MountCalibrationOptions options = Options(0.30);
   options.board_thickness_m = 0.005;
   const MountCalibration m =
@@ -78,7 +78,7 @@ TEST(MountCalibrationTest, ThicknessOfTheBoardIsAddedToTheHeight) {
 }
 
 TEST(MountCalibrationTest, RefusesBadOptionsAndCorners) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   std::vector<cv::Point2f> corners = SeenCorners(camera, 0.30, 0.0, 0.0, 0.0);
   EXPECT_THROW(CalibrateMount(corners, camera, Options(0.0)), std::invalid_argument);
   corners.pop_back();

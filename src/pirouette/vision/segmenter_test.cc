@@ -5,11 +5,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pirouette/sim/renderer.h"
+#include "pirouette/testing/test_camera.h"
 #include "pirouette/vision/appearance_segmenter.h"
 #include "pirouette/vision/edge_map.h"
 #include "pirouette/vision/floor_segmenter.h"
 #include "pirouette/vision/paper_segmenter.h"
-#include "pirouette/vision/test_camera.h"
 
 namespace pirouette::vision {
 namespace {
@@ -45,7 +45,7 @@ int BoundaryRow(const cv::Mat1b& mask, int u) {
   return -1;
 }
 
-class SegmenterMethodTest : public testing::TestWithParam<SegmentationMethod> {};
+class SegmenterMethodTest : public ::testing::TestWithParam<SegmentationMethod> {};
 
 TEST_P(SegmenterMethodTest, FloodFillStopsAtTheBoxBase) {
   auto segmenter = MakeFloorSegmenter(GetParam(), std::nullopt);
@@ -88,7 +88,7 @@ TEST_P(SegmenterMethodTest, SearchesTheBottomRowsWhenAnObstacleIsInFront) {
 // crosses the image at a slant; the floor's boundary found in each column
 // the box's front face covers lies on the projection of the face's base.
 TEST_P(SegmenterMethodTest, RenderedBoxBaseWithThePaperCamera) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const Eigen::Vector2d robot_xy(2.0, 2.0);
   const double yaw = core::DegToRad(15.0);
   const Eigen::Vector2d box_centre = robot_xy + Eigen::Vector2d(0.30, 0.0);
@@ -138,8 +138,9 @@ TEST_P(SegmenterMethodTest, RenderedBoxBaseWithThePaperCamera) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, SegmenterMethodTest,
-                         testing::Values(SegmentationMethod::kPaper, SegmentationMethod::kDefault),
-                         [](const testing::TestParamInfo<SegmentationMethod>& info) {
+                         ::testing::Values(SegmentationMethod::kPaper,
+                                           SegmentationMethod::kDefault),
+                         [](const ::testing::TestParamInfo<SegmentationMethod>& info) {
                            return std::string(SegmentationMethodName(info.param));
                          });
 
@@ -268,7 +269,7 @@ EdgeMap ReferenceEdges(const cv::Mat3b& bgr, const VerticalDirectionField& verti
 }
 
 TEST(EdgeMapTest, TheDetectorFindsWhatTheDefinitionDoes) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const VerticalDirectionField vertical(camera);
   cv::Mat3b image = FloorWithBox();
   cv::resize(image, image, cv::Size(320, 240), 0.0, 0.0, cv::INTER_LINEAR);

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "pirouette/vision/test_camera.h"
+#include "pirouette/testing/test_camera.h"
 
 namespace pirouette::vision {
 namespace {
@@ -15,7 +15,7 @@ double AngleDeg(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 }
 
 TEST(VerticalDirectionFieldTest, MatchesProjectedVerticalLines) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const VerticalDirectionField field(camera);
   const Eigen::Isometry3d camera_T_robot = camera.robot_T_camera().inverse();
   int checked = 0;
@@ -42,7 +42,7 @@ TEST(VerticalDirectionFieldTest, MatchesProjectedVerticalLines) {
 }
 
 TEST(VerticalDirectionFieldTest, PointsUpTheImageAtTheCentreColumn) {
-  const VerticalDirectionField field(PaperCamera());
+  const VerticalDirectionField field(testing::PaperCamera());
   const cv::Vec2f d = field.At(160, 200);
   EXPECT_NEAR(d[0], 0.0, 0.01);
   EXPECT_NEAR(d[1], -1.0, 0.01);
@@ -56,7 +56,7 @@ TEST(VerticalDirectionFieldTest, WithoutACameraVerticalIsUpTheImage) {
 }
 
 TEST(VerticalDirectionFieldTest, AReducedGridTakesTheDirectionAtItsBlocksCentre) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const VerticalDirectionField full(camera);
   const VerticalDirectionField reduced(camera, 2);
   EXPECT_EQ(reduced.width(), 160);

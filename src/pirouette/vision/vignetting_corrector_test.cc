@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pirouette/sim/renderer.h"
-#include "pirouette/vision/test_camera.h"
+#include "pirouette/testing/test_camera.h"
 
 namespace pirouette::vision {
 namespace {
@@ -43,7 +43,7 @@ double ChannelSpread(const cv::Mat3b& image, int channel) {
 }
 
 TEST(VignettingCorrectorTest, FlattensARenderedUniformFloor) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const cv::Mat3b raw = RenderUniformFloor(camera);
   const VignettingCorrector corrector(camera);
   const cv::Mat3b corrected = corrector.Apply(raw);
@@ -59,7 +59,7 @@ TEST(VignettingCorrectorTest, FlattensARenderedUniformFloor) {
 }
 
 TEST(VignettingCorrectorTest, FactorIsTheInverseOfTheCameraGainPerChannel) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const VignettingCorrector corrector(camera);
   // OpenCV's channel 0 is blue, the camera's channel 2.
   for (const auto& [u, v] : {std::pair{0, 0}, std::pair{319, 239}, std::pair{100, 50}}) {
@@ -72,7 +72,7 @@ TEST(VignettingCorrectorTest, FactorIsTheInverseOfTheCameraGainPerChannel) {
 }
 
 TEST(VignettingCorrectorTest, SaturatesInsteadOfWrapping) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const VignettingCorrector corrector(camera);
   const cv::Mat3b white(240, 320, cv::Vec3b(255, 255, 255));
   const cv::Mat3b out = corrector.Apply(white);
@@ -80,7 +80,7 @@ TEST(VignettingCorrectorTest, SaturatesInsteadOfWrapping) {
 }
 
 TEST(VignettingCorrectorTest, AReducedGridTakesItsBlocksMeanFactor) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const VignettingCorrector full(camera);
   const VignettingCorrector reduced(camera, 2);
   EXPECT_EQ(reduced.width(), 160);
@@ -97,7 +97,7 @@ TEST(VignettingCorrectorTest, AReducedGridTakesItsBlocksMeanFactor) {
 }
 
 TEST(VignettingCorrectorTest, ReducingAndCorrectingInOnePass) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   cv::Mat3b raw(240, 320);
   cv::RNG rng(9);
   rng.fill(raw, cv::RNG::UNIFORM, 0, 200);

@@ -7,7 +7,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "pirouette/vision/test_camera.h"
+#include "pirouette/testing/test_camera.h"
 
 namespace pirouette::vision {
 namespace {
@@ -33,7 +33,7 @@ cv::Mat3b FlatField(const camera::CameraModel& camera, const std::array<double, 
 }
 
 TEST(VignettingFitTest, RecoversEachChannelsK) {
-  const camera::CameraModel camera = PaperCamera();  // k = 0.35, 0.30, 0.40
+  const camera::CameraModel camera = testing::PaperCamera();  // k = 0.35, 0.30, 0.40
   const VignettingFit fit = FitVignetting(FlatField(camera, {180, 200, 150}, 2.0, 1), camera);
   EXPECT_NEAR(fit.vignetting.k[0], 0.35, 0.01);
   EXPECT_NEAR(fit.vignetting.k[1], 0.30, 0.01);
@@ -49,7 +49,7 @@ TEST(VignettingFitTest, RecoversEachChannelsK) {
 }
 
 TEST(VignettingFitTest, IgnoresSaturatedAndStainedPatches) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   cv::Mat3b bgr = FlatField(camera, {180, 200, 150}, 2.0, 2);
   cv::rectangle(bgr, cv::Rect(150, 110, 30, 20), cv::Scalar(255, 255, 255), cv::FILLED);  // glare
   cv::circle(bgr, cv::Point(60, 60), 12, cv::Scalar(60, 70, 80), cv::FILLED);             // a stain
@@ -60,7 +60,7 @@ TEST(VignettingFitTest, IgnoresSaturatedAndStainedPatches) {
 }
 
 TEST(VignettingFitTest, CornersBrighterThanTheCentreGiveZero) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   cv::Mat3b bgr(camera.height(), camera.width());
   for (int v = 0; v < bgr.rows; ++v) {
     for (int u = 0; u < bgr.cols; ++u) {
@@ -77,7 +77,7 @@ TEST(VignettingFitTest, CornersBrighterThanTheCentreGiveZero) {
 }
 
 TEST(VignettingFitTest, RefusesAnOverexposedPhoto) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = testing::PaperCamera();
   const cv::Mat3b white(camera.height(), camera.width(), cv::Vec3b(255, 255, 255));
   EXPECT_THROW(FitVignetting(white, camera), std::invalid_argument);
 }

@@ -1,0 +1,17 @@
+#pragma once
+
+namespace pirouette::core {
+
+// A robot's motion error, as fractions of each move (the simulator's, or a
+// real robot's odometry model): a straight
+// move of d drives d·(1 + translation_bias + ε_t), a turn by θ turns
+// θ·(1 + rotation_bias + ε_r), ε ~ N(0, translation | rotation). The biases
+// model wheels that drift one way (a wheel a little larger than the other).
+struct OdometryNoise {
+  double translation = 0.0;       // standard deviation, >= 0
+  double rotation = 0.0;          // standard deviation, >= 0
+  double translation_bias = 0.0;  // in [-0.5, 0.5]
+  double rotation_bias = 0.0;     // in [-0.5, 0.5]
+};
+
+}  // namespace pirouette::core

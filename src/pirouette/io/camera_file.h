@@ -1,0 +1,30 @@
+#pragma once
+
+#include <string>
+
+#include "pirouette/camera/camera_model.h"
+
+namespace YAML {
+class Node;
+}
+
+namespace pirouette::io {
+
+// Reads a camera file (SPEC.md: ROS camera_info YAML plus `mount` and
+// `vignetting`). Throws core::InputError naming the file, line and field for
+// anything missing, of the wrong type or out of range.
+camera::CameraModel LoadCameraFile(const std::string& path);
+
+// The same from a YAML node already read (a world file's inline camera);
+// `file` names the file it came from, for messages, and `field_prefix` the
+// node's place in it (e.g. "robot.camera"), so that fields read "robot.camera.mount.tilt".
+camera::CameraModel ParseCameraNode(const YAML::Node& node, const std::string& file,
+                                    const std::string& field_prefix);
+
+// The text of a camera file (ROS camera_info layout plus `mount` and
+// `vignetting`) that LoadCameraFile reads back to the same values. Any
+// CameraModel can be written. Writing it to disk (atomically) is the
+// application's job: this layer does no I/O beyond reading its input.
+std::string CameraFileText(const camera::CameraModel& camera);
+
+}  // namespace pirouette::io

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <string>
+
+#include "pirouette/mapping/trinary_map.h"
+
+// Map files as ROS's map_server reads and writes them (SPEC.md, "Map files"):
+// a YAML file of metadata beside a greyscale image, one pixel a cell.
+
+namespace pirouette::io {
+
+// The thresholds written to every map.yaml: with them map_server reads 254 as
+// free, 0 as occupied and 205 as unknown ((255 - 205) / 255 = 0.19608 lies
+// between them).
+inline constexpr double kOccupiedThresh = 0.65;
+inline constexpr double kFreeThresh = 0.196;
+
+// The pixel values of map.pgm.
+inline constexpr unsigned char kPgmFree = 254;
+inline constexpr unsigned char kPgmOccupied = 0;
+inline constexpr unsigned char kPgmUnknown = 205;
+
+// The text of map.yaml for `map`, its `image` field naming `image_name` (the
+// PGM's file name, relative to the YAML's folder): mode trinary, the map's
+// resolution, origin [x, y, 0] (the world position of the lower-left cell's
+// lower-left corner), negate 0 and the thresholds above. Numbers are written
+// in the shortest form that reads back to the same double.
+std::string RosMapYaml(const mapping::TrinaryMap& map, const std::string& image_name);
+
+// The bytes of map.pgm for `map`: binary PGM, header exactly
+// "P5\n<width> <height>\n255\n", then one byte a cell, the first row the map's
+// top (its largest y); kPgmFree, kPgmOccupied, kPgmUnknown.
+std::string RosMapPgm(const mapping::TrinaryMap& map);
+
+// Writes the map to `yaml_path` (DIR/STEM.yaml) and its image to DIR/STEM.pgm,
+// both atomically (the PGM first, so that a YAML never names a missing
+// image); the YAML's `image` field is the PGM's file name. Throws
+// std::invalid_argument when `yaml_path` ends in ".pgm" (the two would be one
+// file), std::runtime_error naming the path when a file cannot be written.
+void WriteRosMap(const mapping::TrinaryMap& map, const std::string& yaml_path);
+
+// Reads a map the way map_server does. The YAML needs `image` (relative to
+// the YAML's folder, or absolute), `resolution` (> 0), `origin` ([x, y, yaw],
+// yaw 0: rotated maps are refused), `negate` (0 / 1 or false / true),
+// `occupied_thresh` and `free_thresh` (0..1, free_thresh <= occupied_thresh);
+// `mode` is optional and must be trinary (map_server's default; scale and raw
+// are refused, as a TrinaryMap cannot hold their in-between values). Other
+// keys are ignored, as map_server ignores them.
+//
+// The image is a PGM (binary P5 or plain P2, maxval up to 65535), or any
+// other picture OpenCV reads (PNG, ...), whose colour channels are averaged
+// (an alpha channel is ignored). A pixel of value v (maxval m) is occupied
+// with probability p = (m - v) / m, or v / m when negated; the cell is
+// occupied when p > occupied_thresh, free when p < free_thresh, unknown
+// otherwise. The image's first row is the map's top.
+//
+// Throws core::InputError naming the file, the line and the field for a
+// missing or unreadable file, malformed YAML, a missing or wrong field, and a
+// missing, unreadable or malformed image.
+mapping::TrinaryMap ReadRosMap(const std::string& yaml_path);
+
+}  // namespace pirouette::io

@@ -1,0 +1,487 @@
+#include "pirouette/io/world_file.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <initializer_list>
+#include <iterator>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "pirouette/core/angle.h"
+#include "pirouette/io/camera_file.h"
+#include "pirouette/io/yaml_fields.h"
+
+namespace pirouette::io {
+namespace {
+
+using io::DescribeNode;
+using io::JoinFieldPath;
+using io::LineOf;
+using io::NumberList;
+using io::ReadList;
+using io::ReadMap;
+using io::ReadNumber;
+using io::ReadNumbers;
+using io::ReadString;
+using io::ScalarKind;
+using io::ScalarKindOf;
+using io::ThrowInputError;
+using io::YamlField;
+using io::YamlMap;
+
+// ---------------------------------------------------------------------------
+// The world file's values.
+
+constexpr std::string_view kFormat = "pirouette-world/1";
+
+std::string Item(std::size_t i, std::size_t count) {
+  return fmt::format("item {} of {}: ", i + 1, count);
+}
+
+double ReadPositive(const std::string& file, const YamlField& field) {
+  const double value = ReadNumber(file, field);
+  if (!(value > 0.0)) ThrowInputError(file, field, fmt::format("must be > 0, got {}", value));
+  return value;
+}
+
+double ReadNonNegative(const std::string& file, const YamlField& field) {
+  const double value = ReadNumber(file, field);
+  if (!(value >= 0.0)) ThrowInputError(file, field, fmt::format("must be >= 0, got {}", value));
+  return value;
+}
+
+double ReadFraction(const std::string& file, const YamlField& field) {
+  const double value = ReadNumber(file, field);
+  if (!(value >= 0.0 && value <= 1.0)) {
+    ThrowInputError(file, field, fmt::format("must lie in [0, 1], got {}", value));
+  }
+  return value;
+}
+
+// [x, y]: a point.
+Eigen::Vector2d ReadPoint(const std::string& file, const YamlField& field) {
+  const NumberList xy = ReadNumbers(file, field, 2);
+  return {xy.values[0], xy.values[1]};
+}
+
+// [x, y]: a size, both > 0.
+Eigen::Vector2d ReadSize(const std::string& file, const YamlField& field) {
+  const NumberList xy = ReadNumbers(file, field, 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (!(xy.values[i] > 0.0)) {
+      ThrowInputError(file, xy.items[i],
+                      Item(i, 2) + fmt::format("must be > 0, got {}", xy.values[i]));
+    }
+  }
+  return {xy.values[0], xy.values[1]};
+}
+
+// [r, g, b]: whole numbers 0..255.
+core::Rgb ReadColour(const std::string& file, const YamlField& field) {
+  const std::string what = "a colour [r, g, b] of whole numbers 0..255";
+  const std::vector<YamlField> items = ReadList(file, field, what);
+  if (items.size() != 3) {
+    ThrowInputError(file, field, fmt::format("expected {}, got {} items", what, items.size()));
+  }
+  std::uint8_t channels[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double value = ReadNumber(file, items[i], Item(i, 3));
+    if (value != std::floor(value) || value < 0.0 || value > 255.0) {
+      ThrowInputError(file, items[i],
+                      Item(i, 3) + fmt::format("expected a whole number 0..255, got {}",
+                                               items[i].node.Scalar()));
+    }
+    channels[i] = static_cast<std::uint8_t>(value);
+  }
+  return {channels[0], channels[1], channels[2]};
+}
+
+YamlField Index(const YamlField& item, std::size_t i) {
+  return {item.node, fmt::format("{}[{}]", item.path, i), item.line};
+}
+
+// ---------------------------------------------------------------------------
+// Prisms: the points must make a simple polygon with an area.
+
+double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+int Orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const double cross = Cross(a, b, c);
+  return (cross > 0.0) - (cross < 0.0);
+}
+
+// True where p, known to be on the line through a and b, lies on the segment ab.
+bool WithinSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return p.x() >= std::min(a.x(), b.x()) && p.x() <= std::max(a.x(), b.x()) &&
+         p.y() >= std::min(a.y(), b.y()) && p.y() <= std::max(a.y(), b.y());
+}
+
+// True where the closed segments ab and cd share a point.
+bool SegmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                  const Eigen::Vector2d& d) {
+  const int o1 = Orientation(a, b, c);
+  const int o2 = Orientation(a, b, d);
+  const int o3 = Orientation(c, d, a);
+  const int o4 = Orientation(c, d, b);
+  if (o1 != o2 && o3 != o4) return true;
+  return (o1 == 0 && WithinSegment(c, a, b)) || (o2 == 0 && WithinSegment(d, a, b)) ||
+         (o3 == 0 && WithinSegment(a, c, d)) || (o4 == 0 && WithinSegment(b, c, d));
+}
+
+// Why `points` (a closed polygon, either orientation) is not a simple polygon
+// with an area; nullopt when it is one. Points are numbered from 1 in messages.
+std::optional<std::string> PolygonProblem(const std::vector<Eigen::Vector2d>& points) {
+  const std::size_t n = points.size();
+  const auto next = [n](std::size_t i) { return (i + 1) % n; };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (points[i] == points[next(i)]) {
+      return fmt::format("points {} and {} are the same point", i + 1, next(i) + 1);
+    }
+  }
+  bool collinear = true;
+  for (std::size_t i = 2; i < n; ++i) {
+    collinear = collinear && Orientation(points[0], points[1], points[i]) == 0;
+  }
+  if (collinear) return "the points lie on one line: the polygon has no area";
+  for (std::size_t i = 0; i < n; ++i) {
+    // Adjacent edges share a point; they must not run back over each other.
+    const Eigen::Vector2d& a = points[i];
+    const Eigen::Vector2d& b = points[next(i)];
+    const Eigen::Vector2d& c = points[next(next(i))];
+    if (Orientation(a, b, c) == 0 && (a - b).dot(c - b) > 0.0) {
+      return fmt::format("the polygon folds back on itself at point {}", next(i) + 1);
+    }
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (next(j) == i) continue;  // adjacent through the closing edge
+      if (SegmentsMeet(a, b, points[j], points[next(j)])) {
+        return fmt::format(
+            "the polygon is not simple: the edge from point {} to point {} meets the edge from "
+            "point {} to point {}",
+            i + 1, next(i) + 1, j + 1, next(j) + 1);
+      }
+    }
+  }
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    twice_area += points[i].x() * points[next(i)].y() - points[next(i)].x() * points[i].y();
+  }
+  if (std::fabs(twice_area) < 2e-12) return "the polygon has no area";
+  return std::nullopt;
+}
+
+// ---------------------------------------------------------------------------
+// Sections of the file.
+
+sim::Floor ReadFloor(const std::string& file, const YamlField& field) {
+  const YamlMap map = ReadMap(file, field, {"size", "colour", "texture"});
+  sim::Floor floor;
+  floor.size = ReadSize(file, map.Required("size"));
+  floor.colour = ReadColour(file, map.Required("colour"));
+  if (const auto texture = map.Optional("texture")) floor.texture = ReadFraction(file, *texture);
+  return floor;
+}
+
+sim::BoundaryWalls ReadWalls(const std::string& file, const YamlField& field) {
+  const YamlMap map = ReadMap(file, field, {"height", "thickness", "colour"});
+  sim::BoundaryWalls walls;
+  walls.height = ReadPositive(file, map.Required("height"));
+  walls.thickness = ReadPositive(file, map.Required("thickness"));
+  walls.colour = ReadColour(file, map.Required("colour"));
+  return walls;
+}
+
+// True where the item of `obstacles` is a map whose one key is `chessboard`.
+bool IsChessboardItem(const YamlField& field) {
+  return field.node.IsMap() && field.node.size() == 1 && field.node.begin()->first.IsScalar() &&
+         field.node.begin()->first.Scalar() == "chessboard";
+}
+
+// `- chessboard: {centre: [x, y], cols: 9, rows: 6, square: 0.025, yaw: 0}`:
+// cols × rows inner corners, at least 2 × 2.
+sim::Chessboard ReadChessboard(const std::string& file, const YamlField& field) {
+  const YamlMap item(file, field);
+  const YamlField board_field = item.Required("chessboard");
+  const YamlMap map = ReadMap(file, board_field, {"centre", "cols", "rows", "square", "yaw"});
+  sim::Chessboard board;
+  board.centre = ReadPoint(file, map.Required("centre"));
+  for (const auto& [key, value] :
+       {std::pair<const char*, int*>{"cols", &board.cols}, {"rows", &board.rows}}) {
+    const YamlField count_field = map.Required(key);
+    *value = ReadWholeNumber(file, count_field);
+    if (*value < 2 || *value > 100) {
+      ThrowInputError(
+          file, count_field,
+          fmt::format("inner corners of a chessboard: expected 2..100, got {}", *value));
+    }
+  }
+  board.square = ReadPositive(file, map.Required("square"));
+  if (const auto yaw = map.Optional("yaw")) board.yaw_rad = core::DegToRad(ReadNumber(file, *yaw));
+  return board;
+}
+
+// One item of `obstacles`: a map with one key, its shape.
+sim::Solid ReadObstacle(const std::string& file, const YamlField& field) {
+  static constexpr std::string_view kShapes[] = {"box", "cylinder", "wall", "prism"};
+  const YamlMap item(file, field);
+  const std::vector<YamlMap::Key> keys = item.Keys();
+  if (keys.size() != 1) {
+    std::string names;
+    for (const auto& key : keys) names += (names.empty() ? " (" : ", ") + key.name;
+    if (!names.empty()) names += ")";
+    ThrowInputError(
+        file, field,
+        fmt::format("an obstacle has exactly one key, its shape (box, cylinder, wall, prism or "
+                    "chessboard); "
+                    "got {}{}",
+                    keys.size(), names));
+  }
+  const std::string& shape = keys[0].name;
+  if (std::find(std::begin(kShapes), std::end(kShapes), shape) == std::end(kShapes)) {
+    ThrowInputError(file, keys[0].line, JoinFieldPath(field.path, shape),
+                    "unknown shape (expected box, cylinder, wall, prism or chessboard)");
+  }
+  const YamlField shape_field = item.Required(shape);
+  try {
+    if (shape == "box") {
+      const YamlMap map = ReadMap(file, shape_field, {"centre", "size", "yaw", "height", "colour"});
+      const Eigen::Vector2d centre = ReadPoint(file, map.Required("centre"));
+      const Eigen::Vector2d size = ReadSize(file, map.Required("size"));
+      double yaw_deg = 0.0;
+      if (const auto yaw = map.Optional("yaw")) yaw_deg = ReadNumber(file, *yaw);
+      const double height = ReadPositive(file, map.Required("height"));
+      const core::Rgb colour = ReadColour(file, map.Required("colour"));
+      return sim::MakeBox(centre, size, core::DegToRad(yaw_deg), height, colour);
+    }
+    if (shape == "cylinder") {
+      const YamlMap map = ReadMap(file, shape_field, {"centre", "radius", "height", "colour"});
+      const Eigen::Vector2d centre = ReadPoint(file, map.Required("centre"));
+      const double radius = ReadPositive(file, map.Required("radius"));
+      const double height = ReadPositive(file, map.Required("height"));
+      const core::Rgb colour = ReadColour(file, map.Required("colour"));
+      return sim::MakeCylinder(centre, radius, height, colour);
+    }
+    if (shape == "wall") {
+      const YamlMap map =
+          ReadMap(file, shape_field, {"from", "to", "thickness", "height", "colour"});
+      const Eigen::Vector2d from = ReadPoint(file, map.Required("from"));
+      const YamlField to_field = map.Required("to");
+      const Eigen::Vector2d to = ReadPoint(file, to_field);
+      if (from == to) {
+        ThrowInputError(file, to_field, "the same point as `from`: the wall has no length");
+      }
+      const double thickness = ReadPositive(file, map.Required("thickness"));
+      const double height = ReadPositive(file, map.Required("height"));
+      const core::Rgb colour = ReadColour(file, map.Required("colour"));
+      return sim::MakeWall(from, to, thickness, height, colour);
+    }
+    // prism
+    const YamlMap map = ReadMap(file, shape_field, {"points", "height", "colour"});
+    const YamlField points_field = map.Required("points");
+    const std::vector<YamlField> items = ReadList(file, points_field, "a list of points [x, y]");
+    std::vector<Eigen::Vector2d> points;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      points.push_back(ReadPoint(file, Index(items[i], i)));
+    }
+    // A closed ring (the last point repeating the first) is the same polygon.
+    if (points.size() > 3 && points.front() == points.back()) points.pop_back();
+    if (points.size() < 3) {
+      ThrowInputError(file, points_field,
+                      fmt::format("a prism needs at least 3 points, got {}", points.size()));
+    }
+    if (const auto problem = PolygonProblem(points)) ThrowInputError(file, points_field, *problem);
+    const double height = ReadPositive(file, map.Required("height"));
+    const core::Rgb colour = ReadColour(file, map.Required("colour"));
+    return sim::MakePrism(std::move(points), height, colour);
+  } catch (const std::invalid_argument& e) {
+    // The builders' own checks; the ones above should leave none to fail.
+    ThrowInputError(file, shape_field, e.what());
+  }
+}
+
+sim::Light ReadLight(const std::string& file, const YamlField& field) {
+  const YamlMap map = ReadMap(file, field, {"ambient", "direction", "intensity"});
+  sim::Light light;
+  if (const auto ambient = map.Optional("ambient")) light.ambient = ReadFraction(file, *ambient);
+  if (const auto direction = map.Optional("direction")) {
+    const NumberList xyz = ReadNumbers(file, *direction, 3);
+    if (!(xyz.values[2] < 0.0)) {
+      ThrowInputError(
+          file, *direction,
+          fmt::format("the light must travel downward (z < 0), got z = {}", xyz.values[2]));
+    }
+    light.direction = {xyz.values[0], xyz.values[1], xyz.values[2]};
+  }
+  if (const auto intensity = map.Optional("intensity")) {
+    light.intensity = ReadFraction(file, *intensity);
+  }
+  return light;
+}
+
+// A camera file's name (relative to the world file's folder) or the camera's fields inline.
+camera::CameraModel ReadCamera(const std::string& file, const YamlField& field) {
+  namespace fs = std::filesystem;
+  if (field.node.IsMap()) return io::ParseCameraNode(field.node, file, field.path);
+  if (!field.node.IsScalar() || ScalarKindOf(field.node) != ScalarKind::kString) {
+    ThrowInputError(file, field,
+                    "expected a camera file's name or the camera's fields (a map), got " +
+                        DescribeNode(field.node));
+  }
+  const std::string& name = field.node.Scalar();
+  if (name.empty()) {
+    ThrowInputError(file, field, "expected a camera file's name, got an empty string");
+  }
+  fs::path path(name);
+  if (path.is_relative()) path = fs::path(file).parent_path() / path;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) {
+    ThrowInputError(file, field, fmt::format("camera file '{}' not found", path.string()));
+  }
+  if (fs::is_directory(status)) {
+    ThrowInputError(file, field, fmt::format("camera file '{}' is a folder", path.string()));
+  }
+  return io::LoadCameraFile(path.string());
+}
+
+core::OdometryNoise ReadOdometryNoise(const std::string& file, const YamlField& field) {
+  const YamlMap map =
+      ReadMap(file, field, {"translation", "rotation", "translation_bias", "rotation_bias"});
+  core::OdometryNoise noise;
+  if (const auto value = map.Optional("translation")) {
+    noise.translation = ReadNonNegative(file, *value);
+  }
+  if (const auto value = map.Optional("rotation")) noise.rotation = ReadNonNegative(file, *value);
+  const auto read_bias = [&](const YamlField& value) {
+    const double bias = ReadNumber(file, value);
+    if (!(std::abs(bias) <= 0.5)) {
+      ThrowInputError(file, value, fmt::format("must lie in [-0.5, 0.5], got {}", bias));
+    }
+    return bias;
+  };
+  if (const auto value = map.Optional("translation_bias"))
+    noise.translation_bias = read_bias(*value);
+  if (const auto value = map.Optional("rotation_bias")) noise.rotation_bias = read_bias(*value);
+  return noise;
+}
+
+std::string_view ShapeName(sim::Solid::Kind kind) {
+  switch (kind) {
+    case sim::Solid::Kind::kBox:
+      return "box";
+    case sim::Solid::Kind::kCylinder:
+      return "cylinder";
+    case sim::Solid::Kind::kWall:
+      return "wall";
+    case sim::Solid::Kind::kPrism:
+      return "prism";
+    case sim::Solid::Kind::kBoundaryWall:
+      break;
+  }
+  return "wall";
+}
+
+sim::World ParseWorld(const YAML::Node& node, const std::string& file) {
+  const YamlField root{node, "", LineOf(node)};
+  const YamlMap map(file, root);
+  // The format first: a file of another kind gets that said, not a list of unknown keys.
+  const YamlField format_field = map.Required("format");
+  const std::string format = ReadString(file, format_field);
+  if (format != kFormat) {
+    ThrowInputError(file, format_field, fmt::format("expected '{}', got '{}'", kFormat, format));
+  }
+  map.AllowOnly({"format", "name", "floor", "walls", "obstacles", "light", "robot"});
+
+  const YamlField name_field = map.Required("name");
+  std::string name = ReadString(file, name_field);
+  if (name.empty()) ThrowInputError(file, name_field, "must not be empty");
+
+  const sim::Floor floor = ReadFloor(file, map.Required("floor"));
+
+  std::optional<sim::BoundaryWalls> walls;
+  if (const auto field = map.Optional("walls")) walls = ReadWalls(file, *field);
+
+  std::vector<sim::Solid> obstacles;
+  std::vector<std::size_t> obstacle_items;  // each obstacle's index in the file's list
+  std::vector<int> obstacle_lines;
+  std::vector<sim::Chessboard> chessboards;
+  if (const auto field = map.Optional("obstacles")) {
+    const std::vector<YamlField> items = ReadList(file, *field, "a list of obstacles");
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (IsChessboardItem(items[i])) {
+        chessboards.push_back(ReadChessboard(file, Index(items[i], i)));
+        continue;
+      }
+      obstacles.push_back(ReadObstacle(file, Index(items[i], i)));
+      obstacle_items.push_back(i);
+      obstacle_lines.push_back(items[i].line);
+    }
+  }
+
+  sim::Light light;
+  if (const auto field = map.Optional("light")) light = ReadLight(file, *field);
+
+  const YamlMap robot =
+      ReadMap(file, map.Required("robot"), {"start", "radius", "camera", "odometry_noise"});
+  const YamlField start_field = robot.Required("start");
+  const NumberList start = ReadNumbers(file, start_field, 3);
+  const core::Pose2 world_T_start(start.values[0], start.values[1],
+                                  core::DegToRad(start.values[2]));
+  const double radius = ReadPositive(file, robot.Required("radius"));
+  camera::CameraModel camera = ReadCamera(file, robot.Required("camera"));
+  core::OdometryNoise noise;
+  if (const auto field = robot.Optional("odometry_noise")) noise = ReadOdometryNoise(file, *field);
+
+  std::optional<sim::World> world;
+  try {
+    world.emplace(std::move(name), floor, walls, obstacles, light,
+                  sim::RobotSpec{world_T_start, radius, std::move(camera), noise},
+                  std::move(chessboards));
+  } catch (const std::invalid_argument& e) {
+    ThrowInputError(file, 0, "", e.what());
+  }
+
+  // The robot's disc at the start must lie on the floor and touch no obstacle.
+  const Eigen::Vector2d& centre = world_T_start.translation();
+  if (!world->DiscFits(centre, radius)) {
+    const std::string disc =
+        fmt::format("the robot's disc (radius {}) at ({}, {})", radius, centre.x(), centre.y());
+    const double to_edge = std::min(
+        {centre.x(), centre.y(), floor.size.x() - centre.x(), floor.size.y() - centre.y()});
+    if (!(to_edge > radius)) {
+      ThrowInputError(file, start_field,
+                      fmt::format("{} does not lie on the floor [0, {}] × [0, {}]", disc,
+                                  floor.size.x(), floor.size.y()));
+    }
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      if (!(obstacles[i].SignedDistance(centre) > radius)) {
+        ThrowInputError(
+            file, start_field,
+            fmt::format("{} overlaps obstacles[{}] (the {} on line {})", disc, obstacle_items[i],
+                        ShapeName(obstacles[i].kind), obstacle_lines[i]));
+      }
+    }
+    ThrowInputError(file, start_field, disc + " touches something occupied");
+  }
+  return std::move(*world);
+}
+
+}  // namespace
+
+sim::World LoadWorldFile(const std::string& path) {
+  return ParseWorld(io::LoadYamlFile(path), path);
+}
+
+}  // namespace pirouette::io
