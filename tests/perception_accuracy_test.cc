@@ -45,7 +45,7 @@ double Quantile(std::vector<double> values, double q) {
   return values[rank];
 }
 
-void ExpectAccuracy(MaskSource method, const Bounds& bounds) {
+void ExpectAccuracy(vision::MaskSource method, const Bounds& bounds) {
   PerceptionEvalRequest request;
   for (const char* world : {"soccer_field", "cluttered_room", "maze", "two_rooms", "apartment"}) {
     request.world_paths.push_back(std::string(PIROUETTE_WORLDS_DIR) + "/" + world + ".yaml");
@@ -71,12 +71,13 @@ void ExpectAccuracy(MaskSource method, const Bounds& bounds) {
 }
 
 TEST(PerceptionAccuracyTest, DefaultMethodInEveryShippedWorld) {
-  ExpectAccuracy(MaskSource::kDefault,
+  ExpectAccuracy(vision::MaskSource::kDefault,
                  {.median_m = 0.005, .p95_m = 0.02, .wrong_class_rate = 0.02});
 }
 
 TEST(PerceptionAccuracyTest, PaperMethodInEveryShippedWorld) {
-  ExpectAccuracy(MaskSource::kPaper, {.median_m = 0.005, .p95_m = 0.02, .wrong_class_rate = 0.05});
+  ExpectAccuracy(vision::MaskSource::kPaper,
+                 {.median_m = 0.005, .p95_m = 0.02, .wrong_class_rate = 0.05});
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ TEST(PerceptionLoopTest, TrueMasksGiveTheTruthInEveryShippedWorld) {
   for (const char* world : {"soccer_field", "cluttered_room", "maze", "two_rooms", "apartment"}) {
     request.world_paths.push_back(std::string(PIROUETTE_WORLDS_DIR) + "/" + world + ".yaml");
   }
-  request.method = MaskSource::kTruth;
+  request.method = vision::MaskSource::kTruth;
   request.poses = 2;
   const std::vector<WorldPerception> worlds = EvaluatePerception(request);
   ASSERT_EQ(worlds.size(), 5u);

@@ -99,7 +99,7 @@ Command AddExploreCommand(CLI::App& parent) {
             if (noise_option->count() > 0) request->odometry_noise = {(*noise)[0], (*noise)[1]};
             if (bias_option->count() > 0) request->odometry_bias = {(*bias)[0], (*bias)[1]};
             request->options.planner = *app::ParsePlannerKind(*planner);
-            request->options.method = *app::ParseMaskSource(*method);
+            request->options.method = *vision::ParseMaskSource(*method);
             request->options.stop_requested = StopOnInterrupt();
             const app::ExploreReport report = app::RunExplore(*request);
             const std::string& status = report.result.status;

@@ -69,7 +69,7 @@ Command AddLocateCommand(CLI::App& parent) {
                   "(cyan), where the answer puts them");
   cmd->add_flag("--quiet", request->quiet, "no progress line");
   return {cmd, [request, pose, pose_option, method, out, picture] {
-            const auto parsed = app::ParseMaskSource(*method);
+            const auto parsed = vision::ParseMaskSource(*method);
             if (!parsed) {
               throw core::InputError("", 0, "--method",
                                      "'" + *method + "' is not a method (paper | default | truth)");
@@ -88,7 +88,7 @@ Command AddLocateCommand(CLI::App& parent) {
                          result.table_loaded ? ", loaded" : ", built",
                          result.colours_path.empty() ? "none" : result.colours_path.c_str());
             if (request->pose) {
-              const app::LocateAnswer& a = result.trials.front().answer;
+              const localize::LocateAnswer& a = result.trials.front().answer;
               if (a.found) {
                 std::printf("found %.3f %.3f %.1f (agreement %.3f)\n", a.world_T_robot.x(),
                             a.world_T_robot.y(), core::RadToDeg(a.world_T_robot.heading()),

@@ -29,7 +29,7 @@ Command AddPerceptionEvalCommand(CLI::App& parent) {
   CLI::Option* max_range_option = cmd->add_option(
       "--max-range", *max_range, "the profiles' maximum range, metres (default: the camera's)");
   return {cmd, [request, method, max_range, max_range_option] {
-            const auto parsed = app::ParseMaskSource(*method);
+            const auto parsed = vision::ParseMaskSource(*method);
             if (!parsed) {
               throw core::InputError("", 0, "--method",
                                      "'" + *method + "' is not a method (paper | default | truth)");

@@ -52,7 +52,7 @@ Command AddPlacesCommand(CLI::App& parent) {
   cmd->add_flag("--quiet", request->quiet, "no progress line");
   return {cmd, [request, method, spacing, spacing_option, out, no_refine] {
             request->refine = !*no_refine;
-            const auto parsed = app::ParseMaskSource(*method);
+            const auto parsed = vision::ParseMaskSource(*method);
             if (!parsed) {
               throw core::InputError("", 0, "--method",
                                      "'" + *method + "' is not a method (paper | default | truth)");

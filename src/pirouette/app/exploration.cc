@@ -13,14 +13,16 @@
 #include <utility>
 
 #include "pirouette/app/frame_mapper.h"
-#include "pirouette/app/look_ahead.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/explore/distance_transform.h"
 #include "pirouette/explore/frontier_planner.h"
+#include "pirouette/explore/look_ahead.h"
+#include "pirouette/explore/moves.h"
 #include "pirouette/explore/path.h"
 #include "pirouette/explore/planner.h"
+#include "pirouette/mapping/trinary_map.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/run/stage_timer.h"
 #include "pirouette/sim/sim_robot.h"
@@ -39,7 +41,8 @@ class Explorer {
            const ExplorationObserver& observer)
       : options_(options),
         observer_(observer),
-        cell_m_(options.cell_m > 0.0 ? options.cell_m : DefaultCellSize(description.radius_m)),
+        cell_m_(options.cell_m > 0.0 ? options.cell_m
+                                     : mapping::DefaultCellSize(description.radius_m)),
         radius_m_(description.radius_m),
         robot_(robot),
         mapper_(
@@ -251,7 +254,8 @@ class Explorer {
   // Follows a plan's waypoints: for each leg, face it, then in pieces no
   // longer than the camera checks, look and drive.
   FollowOutcome Follow(const explore::Plan& plan) {
-    for (const Eigen::Vector2d& target : MergeCollinear(plan.waypoints_world)) {
+    for (const Eigen::Vector2d& target :
+         explore::MergeCollinear(Pose().translation(), plan.waypoints_world)) {
       while (true) {
         if (!result_.status.empty() || Interrupted()) return FollowOutcome::kStopped;
         const core::Pose2 pose = Pose();
@@ -261,16 +265,16 @@ class Explorer {
         Face(core::NormalizeAngle(std::atan2(to.y(), to.x()) - pose.heading()));
         const double leg = std::min(distance, look_.LongestCheckedMove());
         const core::ObstacleProfile& profile = Look().profile;
-        const LookAhead::Finding finding = look_.Blocking(profile, leg);
-        const LookVerdict verdict = finding.verdict;
-        if (verdict == LookVerdict::kBlind &&
-            !CorridorKnownFree(mapper_.grid().ToExploredMap(), pose.translation(),
-                               pose.translation() + leg * Pose().Direction(), radius_m_)) {
+        const explore::LookAhead::Finding finding = look_.Blocking(profile, leg);
+        const explore::LookVerdict verdict = finding.verdict;
+        if (verdict == explore::LookVerdict::kBlind &&
+            !mapping::CorridorKnownFree(mapper_.grid().ToExploredMap(), pose.translation(),
+                                        pose.translation() + leg * Pose().Direction(), radius_m_)) {
           BackUpToSee();
           ++result_.blocked_looks;
           return FollowOutcome::kBlocked;
         }
-        if (verdict == LookVerdict::kBlocked) {
+        if (verdict == explore::LookVerdict::kBlocked) {
           mapper_.ConfirmBlocking(profile, last_seen_.pose, leg);
           if (observer_.on_blocked) observer_.on_blocked(leg);
           ++result_.blocked_looks;
@@ -282,31 +286,14 @@ class Explorer {
     return FollowOutcome::kReached;
   }
 
-  // The waypoints without those in line with their neighbours: one look and
-  // one drive a straight leg (as far as one look reaches).
-  std::vector<Eigen::Vector2d> MergeCollinear(const std::vector<Eigen::Vector2d>& waypoints) const {
-    std::vector<Eigen::Vector2d> merged;
-    Eigen::Vector2d from = Pose().translation();
-    for (std::size_t i = 0; i < waypoints.size(); ++i) {
-      if (i + 1 < waypoints.size()) {
-        const Eigen::Vector2d a = (waypoints[i] - from).normalized();
-        const Eigen::Vector2d b = (waypoints[i + 1] - waypoints[i]).normalized();
-        if (a.dot(b) > 1.0 - 1e-6) continue;
-      }
-      merged.push_back(waypoints[i]);
-      from = waypoints[i];
-    }
-    return merged;
-  }
-
   // Backs straight up by the camera's near blind range where the map knows
   // the floor behind is free within `half_width_m` of the path (counted in
   // backups); returns whether it did.
   bool BackUpOverKnownFree(double half_width_m) {
     const double back = look_.options().near_m;
     const core::Pose2 pose = Pose();
-    if (!CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
-                           pose.translation() - back * pose.Direction(), half_width_m)) {
+    if (!mapping::CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
+                                    pose.translation() - back * pose.Direction(), half_width_m)) {
       return false;
     }
     ++result_.backups;
@@ -419,7 +406,7 @@ class Explorer {
       const double heading = away + offset;
       const Eigen::Vector2d to =
           here + distance * Eigen::Vector2d(std::cos(heading), std::sin(heading));
-      if (!CorridorKnownFree(map, here, to, radius_m_)) continue;
+      if (!mapping::CorridorKnownFree(map, here, to, radius_m_)) continue;
       explore::Plan plan;
       plan.waypoints_world = {to};
       if (Follow(plan) == FollowOutcome::kReached) Pirouette();
@@ -516,7 +503,7 @@ class Explorer {
   ExplorationResult result_;
   robot::Robot& robot_;
   FrameMapper mapper_;
-  const LookAhead& look_;
+  const explore::LookAhead& look_;
   FrameMapper::Seen last_seen_;
   std::vector<core::MoveOutcome> motions_since_frame_;
   std::unique_ptr<explore::Planner> planner_;
@@ -575,8 +562,6 @@ std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name) {
   if (name == "scan") return LocalizeKind::kScan;
   return std::nullopt;
 }
-
-double DefaultCellSize(double robot_radius_m) { return robot_radius_m < 0.1 ? 0.01 : 0.02; }
 
 void CheckExplorationOptions(const ExplorationOptions& options) {
   try {

@@ -41,7 +41,7 @@ std::optional<PlannerKind> ParsePlannerKind(std::string_view name);
 struct ExplorationOptions {
   std::uint64_t seed = 1;
   PlannerKind planner = PlannerKind::kDistanceTransform;
-  MaskSource method = MaskSource::kDefault;
+  vision::MaskSource method = vision::MaskSource::kDefault;
   // Straight moves allowed before the run stops with status "step-limit".
   int max_steps = 2000;
   // The map's cell; 0: 1 cm for a robot of radius under 0.1 m (the paper's),
@@ -181,9 +181,5 @@ ExplorationResult ExploreWithRobot(robot::Robot& robot, const RobotDescription& 
 // Throws core::InputError for bad options, sim::RenderError when no OpenGL.
 ExplorationResult Explore(const sim::World& world, const ExplorationOptions& options,
                           const ExplorationObserver& observer = {});
-
-// The map cell Explore uses by default: 1 cm for a robot of radius under
-// 0.1 m (the paper's), else 2 cm.
-double DefaultCellSize(double robot_radius_m);
 
 }  // namespace pirouette::app

@@ -42,7 +42,7 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   run["status"] = result.status;
   if (!result.reason.empty()) run["reason"] = result.reason;
   run["planner"] = PlannerKindName(request.options.planner);
-  run["method"] = MaskSourceName(request.options.method);
+  run["method"] = vision::MaskSourceName(request.options.method);
   run["moves"] = result.moves;
   run["turns"] = result.turns;
   run["pirouettes"] = result.pirouettes;
@@ -123,7 +123,7 @@ RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* 
 // so that a robot that is not there leaves nothing behind).
 std::unique_ptr<robot::RemoteRobot> ConnectRobot(const ExploreRequest& request,
                                                  const RobotDescription& robot_info) {
-  if (request.options.method == MaskSource::kTruth) {
+  if (request.options.method == vision::MaskSource::kTruth) {
     throw core::InputError("--method", 0, "", "the truth is only known in the simulator");
   }
   robot::RemoteRobotOptions remote;
@@ -138,8 +138,8 @@ ExplorationResult ExploreRemote(robot::RemoteRobot& robot, const ExploreRequest&
                                 const RobotDescription& robot_info,
                                 const ExplorationObserver& observer) {
   std::unique_ptr<vision::FloorSegmenter> segmenter = vision::MakeFloorSegmenter(
-      request.options.method == MaskSource::kPaper ? vision::SegmentationMethod::kPaper
-                                                   : vision::SegmentationMethod::kDefault,
+      request.options.method == vision::MaskSource::kPaper ? vision::SegmentationMethod::kPaper
+                                                           : vision::SegmentationMethod::kDefault,
       robot_info.camera);
   return ExploreWithRobot(
       robot, robot_info, request.options,
@@ -195,11 +195,11 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     io::RunLogInfo info;
     info.radius_m = robot_info.radius_m;
     info.cell_m = request.options.cell_m > 0.0 ? request.options.cell_m
-                                               : DefaultCellSize(robot_info.radius_m);
+                                               : mapping::DefaultCellSize(robot_info.radius_m);
     info.max_range_m = request.options.max_range_m > 0.0
                            ? request.options.max_range_m
                            : camera::MaxRange(robot_info.camera, info.cell_m);
-    info.method = MaskSourceName(request.options.method);
+    info.method = vision::MaskSourceName(request.options.method);
     info.localize = LocalizeKindName(request.options.localize);
     if (request.robot_url.empty()) {
       info.world = request.world_path;

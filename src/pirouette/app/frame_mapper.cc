@@ -44,7 +44,8 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
       mask_(std::move(mask)),
       ipm_(setup.camera),
       extractor_(ipm_, setup.max_range_m),
-      look_(LookAheadOptions{setup.radius_m, NearRange(ipm_), setup.max_range_m, setup.cell_m}),
+      look_(explore::LookAheadOptions{setup.radius_m, camera::NearRange(ipm_), setup.max_range_m,
+                                      setup.cell_m}),
       grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {
   if (setup.tracking) {
     tracker_.emplace(*setup.tracking);
@@ -129,7 +130,7 @@ void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
 
 void FrameMapper::Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
                           double leg_m) {
-  const LookAhead::Finding finding = look_.Blocking(profile, leg_m);
+  const explore::LookAhead::Finding finding = look_.Blocking(profile, leg_m);
   run::StageTimer timer(update_s_);
   for (int round = 0; round < 4; ++round) {
     grid_.BeginFrame();

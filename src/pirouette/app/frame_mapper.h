@@ -6,11 +6,11 @@
 #include <optional>
 #include <vector>
 
-#include "pirouette/app/look_ahead.h"
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/core/obstacle_profile.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/explore/look_ahead.h"
 #include "pirouette/localize/colour_map.h"
 #include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
@@ -90,7 +90,7 @@ class FrameMapper {
   mapping::OccupancyGrid TakeGrid() { return std::move(grid_); }
   const MapperSetup& setup() const { return setup_; }
   const camera::InversePerspectiveMap& ipm() const { return ipm_; }
-  const LookAhead& look_ahead() const { return look_; }
+  const explore::LookAhead& look_ahead() const { return look_; }
 
   // Seconds spent segmenting and reading profiles, and updating the grid.
   double perceive_s() const { return perceive_s_; }
@@ -105,7 +105,7 @@ class FrameMapper {
   vision::ProfileExtractor extractor_;  // the profile tables, built once
   // With tracking: the longer profile the tracker matches the frames with.
   std::optional<vision::ProfileExtractor> view_extractor_;
-  LookAhead look_;
+  explore::LookAhead look_;
   // Puts a frame (or a confirmation) in grid_ at its map pose.
   void Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot);
   void Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot, double leg_m);

@@ -45,7 +45,7 @@ cv::Mat3b DrawLocatePicture(const LocateResult& result, int target_width_px) {
              cv::LINE_AA, kShift);
   };
 
-  for (const LocateTrial& t : result.trials) {
+  for (const localize::LocateTrial& t : result.trials) {
     if (t.answer.candidates.empty()) continue;
     const core::Pose2& best = t.answer.world_T_robot;
     const cv::Scalar& colour = !t.answer.found ? kCannotColour
@@ -72,7 +72,7 @@ cv::Mat3b DrawLocatePicture(const LocateResult& result, int target_width_px) {
                cv::LINE_AA, kShift);
     tick(best, colour);
   }
-  for (const LocateTrial& t : result.trials) {
+  for (const localize::LocateTrial& t : result.trials) {
     cv::circle(image, pixel(t.truth.translation()), MapCanvas::Fixed(dot + 3), kTruthColour, 2,
                cv::LINE_AA, kShift);
     tick(t.truth, kTruthColour);

@@ -27,7 +27,7 @@ LocateResult OneTrial(bool found, bool right, const core::Pose2& truth, const co
     }
   }
   result.coarse_cell_m = 0.04;
-  LocateTrial t;
+  localize::LocateTrial t;
   t.truth = truth;
   t.answer.found = found;
   t.right = right;

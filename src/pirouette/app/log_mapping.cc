@@ -58,7 +58,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   }
   setup.cell_m = request.cell_m > 0.0    ? request.cell_m
                  : log.info.cell_m > 0.0 ? log.info.cell_m
-                                         : DefaultCellSize(setup.radius_m);
+                                         : mapping::DefaultCellSize(setup.radius_m);
   setup.max_range_m = request.max_range_m > 0.0    ? request.max_range_m
                       : log.info.max_range_m > 0.0 ? log.info.max_range_m
                                                    : camera::MaxRange(setup.camera, setup.cell_m);

@@ -171,7 +171,7 @@ std::string PerceptionEvalJson(const PerceptionEvalRequest& request,
                                const std::vector<WorldPerception>& worlds) {
   std::string out = fmt::format(
       "{{\n  \"method\": \"{}\",\n  \"poses_per_world\": {},\n  \"seed\": {},\n  \"worlds\": [",
-      MaskSourceName(request.method), request.poses, request.seed);
+      vision::MaskSourceName(request.method), request.poses, request.seed);
   ProfileComparison all;
   int frames = 0;
   for (std::size_t i = 0; i < worlds.size(); ++i) {

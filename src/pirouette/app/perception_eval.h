@@ -13,7 +13,7 @@ namespace pirouette::app {
 
 struct PerceptionEvalRequest {
   std::vector<std::string> world_paths;
-  MaskSource method = MaskSource::kDefault;
+  vision::MaskSource method = vision::MaskSource::kDefault;
   int poses = 20;                     // random poses a world, a pirouette (12 frames) at each
   std::uint64_t seed = 1;             // the poses, the sensor noise and the odometry noise
   double cell_m = 0.01;               // the max range is derived for this cell size...

@@ -49,7 +49,7 @@ TEST(PerceptionEvalTest, ComparisonCountsClassesAndErrors) {
 TEST(PerceptionEvalTest, TrueMasksMeasureTheExtractorAlone) {
   PerceptionEvalRequest request;
   request.world_paths = {std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml"};
-  request.method = MaskSource::kTruth;
+  request.method = vision::MaskSource::kTruth;
   request.poses = 1;
   const std::vector<WorldPerception> worlds = EvaluatePerception(request);
   ASSERT_EQ(worlds.size(), 1u);

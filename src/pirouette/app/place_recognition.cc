@@ -32,18 +32,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr int kBins = mapping::kRadialProfileBins;
-
-int BinOf(double bearing_rad) {
-  double a = std::fmod(bearing_rad, 2.0 * std::numbers::pi);
-  if (a < 0.0) a += 2.0 * std::numbers::pi;
-  return std::clamp(static_cast<int>(std::floor(core::RadToDeg(a) * kBins / 360.0)), 0, kBins - 1);
-}
-
 }  // namespace
 
 struct PlaceObserver::Impl {
-  Impl(const sim::World& world, MaskSource method, double max_range_m, std::uint64_t render_seed)
+  Impl(const sim::World& world, vision::MaskSource method, double max_range_m,
+       std::uint64_t render_seed)
       : world(world),
         renderer(world, world.robot().camera,
                  [render_seed] {
@@ -62,7 +55,7 @@ struct PlaceObserver::Impl {
   FloorMasker masker;
 };
 
-PlaceObserver::PlaceObserver(const sim::World& world, MaskSource method, double max_range_m,
+PlaceObserver::PlaceObserver(const sim::World& world, vision::MaskSource method, double max_range_m,
                              std::uint64_t render_seed)
     : impl_(std::make_unique<Impl>(world, method, max_range_m, render_seed)) {
   // The floor segmenter learns the floor over its first pirouette: let it
@@ -75,47 +68,33 @@ PlaceObserver::~PlaceObserver() = default;
 
 double PlaceObserver::max_range_m() const { return impl_->extractor.max_range_m(); }
 
-ObservedPlace PlaceObserver::Observe(const core::Pose2& world_T_robot, std::uint64_t seed) {
+localize::ObservedPlace PlaceObserver::Observe(const core::Pose2& world_T_robot,
+                                               std::uint64_t seed) {
   const sim::World placed = sim::PlaceRobot(impl_->world, world_T_robot, "place");
   const std::vector<sim::SimulatedFrame> frames =
       sim::SimulatePirouette(placed, impl_->renderer, seed);
   // The odometry frame is the world frame at the start: bearings relative to
   // the robot's heading then are odometry bearings less that heading.
   const double start_heading = frames.front().frame.odometry.heading();
-  std::vector<mapping::HeadedProfile> views;
-  std::vector<std::array<int, core::kColourClasses>> votes(kBins);
+  std::vector<localize::PirouetteFrame> views;
   for (const sim::SimulatedFrame& frame : frames) {
     const cv::Mat3b bgr = io::ToBgrMat(frame.frame.image);
     const cv::Mat1b mask = impl_->masker.Mask(bgr, frame.world_T_robot);
-    const double heading = frame.frame.odometry.heading() - start_heading;
-    core::ObstacleProfile profile = impl_->extractor.Extract(mask);
-    for (int u = 0; u < static_cast<int>(profile.readings.size()); ++u) {
-      const core::RangeReading& r = profile.readings[static_cast<std::size_t>(u)];
-      if (r.kind == core::ReadingKind::kClear) continue;
-      const core::ColourClass c = vision::ColumnColour(bgr, mask, u);
-      if (c == core::ColourClass::kNone) continue;
-      ++votes[static_cast<std::size_t>(BinOf(r.bearing_rad + heading))]
-             [static_cast<std::size_t>(c)];
+    localize::PirouetteFrame view;
+    view.heading_rad = frame.frame.odometry.heading() - start_heading;
+    view.profile = impl_->extractor.Extract(mask);
+    for (std::size_t u = 0; u < view.profile.readings.size(); ++u) {
+      view.column_colours.push_back(view.profile.readings[u].kind == core::ReadingKind::kClear
+                                        ? core::ColourClass::kNone
+                                        : vision::ColumnColour(bgr, mask, static_cast<int>(u)));
     }
-    views.push_back({heading, std::move(profile)});
+    views.push_back(std::move(view));
   }
-  const mapping::RadialProfile rop = mapping::MergePirouette(views);
-  ObservedPlace out;
-  out.view.ranges_m = rop.Ranges();
-  for (int b = 0; b < kBins; ++b) {
-    const mapping::RadialBin& bin = rop.bins[static_cast<std::size_t>(b)];
-    out.kinds.push_back(bin.kind);
-    const auto& v = votes[static_cast<std::size_t>(b)];
-    const auto best = std::max_element(v.begin(), v.end());
-    out.view.colours.push_back(bin.kind != core::ReadingKind::kClear && *best > 0
-                                   ? static_cast<core::ColourClass>(best - v.begin())
-                                   : core::ColourClass::kNone);
-  }
-  return out;
+  return localize::ObservePlace(views);
 }
 
 double CoarseCellSize(const sim::World& world) {
-  const double cell = DefaultCellSize(world.robot().radius);
+  const double cell = mapping::DefaultCellSize(world.robot().radius);
   explore::PlannerOptions options;
   options.robot_radius_m = world.robot().radius;
   return cell * options.CoarseFactor(cell);
@@ -130,7 +109,8 @@ double PlaceMaxRange(const sim::World& world, double range_factor) {
     throw core::InputError("", 0, "--range-factor", "must be a number >= 1");
   }
   const camera::CameraModel& camera = world.robot().camera;
-  return camera::LongRange(camera, camera::MaxRange(camera, DefaultCellSize(world.robot().radius)),
+  return camera::LongRange(camera,
+                           camera::MaxRange(camera, mapping::DefaultCellSize(world.robot().radius)),
                            range_factor);
 }
 
@@ -146,7 +126,7 @@ localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& obs
   }
   std::vector<localize::PlaceEntry> entries;
   for (std::size_t i = 0; i < where.size(); ++i) {
-    const ObservedPlace seen =
+    const localize::ObservedPlace seen =
         observer.Observe(core::Pose2(where[i].x(), where[i].y(), 0.0), 1000 + i);
     entries.push_back({where[i].x(), where[i].y(), 0.0, seen.view, seen.kinds});
     if (progress) progress(static_cast<int>(i + 1), static_cast<int>(where.size()));
@@ -213,7 +193,7 @@ PlacesResult MeasurePlaces(const PlacesRequest& request) {
       sim::RandomRobotPoses(world, request.queries, request.seed, request.world_path);
   for (int q = 0; q < request.queries; ++q) {
     const core::Pose2& truth = truths[static_cast<std::size_t>(q)];
-    const ObservedPlace seen = observer.Observe(truth, request.seed * 7919 + q);
+    const localize::ObservedPlace seen = observer.Observe(truth, request.seed * 7919 + q);
     double nearest = std::numeric_limits<double>::infinity();
     for (const localize::PlaceEntry& e : table.entries()) {
       nearest = std::min(nearest, (Eigen::Vector2d(e.x_m, e.y_m) - truth.translation()).norm());
@@ -289,7 +269,7 @@ nlohmann::json PlacesJson(const PlacesRequest& request, const PlacesResult& resu
   out["format"] = "pirouette-places-report/1";
   out["world"] = result.world_name;
   out["world_file"] = request.world_path;
-  out["method"] = std::string(MaskSourceName(request.method));
+  out["method"] = std::string(vision::MaskSourceName(request.method));
   out["seed"] = request.seed;
   out["refine"] = request.refine;
   out["queries"] = result.queries;

@@ -11,17 +11,12 @@
 #include "pirouette/app/floor_masker.h"
 #include "pirouette/core/obstacle_profile.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/localize/observed_place.h"
 #include "pirouette/localize/place_signature.h"
 #include "pirouette/localize/place_table.h"
 #include "pirouette/sim/world.h"
 
 namespace pirouette::app {
-
-// What one simulated pirouette saw, in the robot's own frame at its start.
-struct ObservedPlace {
-  localize::PlaceView view;              // ranges and colour classes, 360 bins
-  std::vector<core::ReadingKind> kinds;  // per bin
-};
 
 // Makes pirouettes in a simulated world and turns them into colour ROPs
 // (Taylor, Geva & Boles 2005, §4 and §5.1): each frame is segmented (one
@@ -36,7 +31,7 @@ struct ObservedPlace {
 // the world.
 class PlaceObserver {
  public:
-  PlaceObserver(const sim::World& world, MaskSource method, double max_range_m,
+  PlaceObserver(const sim::World& world, vision::MaskSource method, double max_range_m,
                 std::uint64_t render_seed);
   ~PlaceObserver();
   PlaceObserver(const PlaceObserver&) = delete;
@@ -46,7 +41,7 @@ class PlaceObserver {
 
   // One pirouette from world_T_robot (the world's odometry noise drawn from
   // `seed`). Throws core::InputError when the robot's disc does not fit there.
-  ObservedPlace Observe(const core::Pose2& world_T_robot, std::uint64_t seed);
+  localize::ObservedPlace Observe(const core::Pose2& world_T_robot, std::uint64_t seed);
 
  private:
   struct Impl;
@@ -54,7 +49,7 @@ class PlaceObserver {
 };
 
 // The spacing of a table's grid for `world`: the planner's coarse cell
-// (explore::PlannerOptions::CoarseFactor at app::DefaultCellSize), but at
+// (explore::PlannerOptions::CoarseFactor at mapping::DefaultCellSize), but at
 // least kMinSpacingRadii robot radii, so that tables stay small (hundreds of
 // places) and quick to build.
 inline constexpr double kMinSpacingRadii = 4.0;
@@ -91,7 +86,7 @@ struct PlacesRequest {
   std::uint64_t seed = 1;
   std::string table_path;           // empty: none; an existing file is loaded, else written
   std::optional<double> spacing_m;  // default DefaultTableSpacing
-  MaskSource method = MaskSource::kDefault;
+  vision::MaskSource method = vision::MaskSource::kDefault;
   bool quiet = false;  // no progress line on standard error
   // Refine the position and heading of the heading-giving signatures' matches
   // (localize::PoseSearch over kSearchRadiusSpacings table spacings, down to

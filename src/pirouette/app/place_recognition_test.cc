@@ -20,9 +20,10 @@ std::string World(const std::string& name) {
 
 TEST(PlaceRecognitionTest, ATurnedPirouetteFindsItsPlaceAndHeading) {
   const sim::World world = io::LoadWorldFile(World("soccer_field"));
-  PlaceObserver observer(world, MaskSource::kDefault, 0.6, 1);
-  const ObservedPlace a = observer.Observe(core::Pose2(0.3, 0.3, 0.0), 1);
-  const ObservedPlace b = observer.Observe(core::Pose2(0.3, 0.3, core::DegToRad(100.0)), 2);
+  PlaceObserver observer(world, vision::MaskSource::kDefault, 0.6, 1);
+  const localize::ObservedPlace a = observer.Observe(core::Pose2(0.3, 0.3, 0.0), 1);
+  const localize::ObservedPlace b =
+      observer.Observe(core::Pose2(0.3, 0.3, core::DegToRad(100.0)), 2);
   ASSERT_EQ(a.view.ranges_m.size(), 360u);
   ASSERT_EQ(a.view.colours.size(), 360u);
   ASSERT_EQ(a.kinds.size(), 360u);
@@ -62,7 +63,7 @@ TEST(PlaceRecognitionTest, TheHeadingInvariantSignaturesFindMostPlaces) {
 TEST(PlaceRecognitionTest, PirouettesAreReadNoFartherThanEveryColumnSeesTheFloor) {
   const sim::World world = io::LoadWorldFile(World("soccer_field"));
   const camera::CameraModel& camera = world.robot().camera;
-  const double map_range = camera::MaxRange(camera, DefaultCellSize(world.robot().radius));
+  const double map_range = camera::MaxRange(camera, mapping::DefaultCellSize(world.robot().radius));
   EXPECT_DOUBLE_EQ(PlaceMaxRange(world, 1.0), map_range);
   EXPECT_DOUBLE_EQ(PlaceMaxRange(world, 2.0), 2.0 * map_range);  // 0.81 m
   // The paper's camera: its centre columns see the floor to 1.10 m at their

@@ -165,10 +165,10 @@ RopResult MakeRop(const RopRequest& request) {
         request.world_T_robot.translation(), {std::cos(bearing), std::sin(bearing)}, max_range);
     result.truth.push_back(hit.value_or(max_range));
   }
-  const std::string title =
-      fmt::format("{}  pose ({:.2f}, {:.2f}, {:.0f} deg)  method {}", world.name(),
-                  request.world_T_robot.x(), request.world_T_robot.y(),
-                  core::RadToDeg(request.world_T_robot.heading()), MaskSourceName(request.method));
+  const std::string title = fmt::format(
+      "{}  pose ({:.2f}, {:.2f}, {:.0f} deg)  method {}", world.name(), request.world_T_robot.x(),
+      request.world_T_robot.y(), core::RadToDeg(request.world_T_robot.heading()),
+      vision::MaskSourceName(request.method));
   io::WritePng(request.out_path,
                PlotRadialProfile(result.rop, result.low_pass, result.truth, title));
   return result;

@@ -16,7 +16,7 @@ struct RopRequest {
   std::string world_path;
   core::Pose2 world_T_robot;
   std::string out_path;  // a PNG
-  MaskSource method = MaskSource::kDefault;
+  vision::MaskSource method = vision::MaskSource::kDefault;
   std::uint64_t seed = 1;             // the sensor noise and the odometry noise
   double cell_m = 0.01;               // the max range is derived for this cell size...
   std::optional<double> max_range_m;  // ...unless given

@@ -22,7 +22,7 @@ RopRequest TruthRequest(double heading_deg) {
   request.out_path =
       (fs::temp_directory_path() / ("pirouette_rop_test_" + std::to_string(::getpid()) + ".png"))
           .string();
-  request.method = MaskSource::kTruth;
+  request.method = vision::MaskSource::kTruth;
   return request;
 }
 

@@ -1,5 +1,6 @@
 #include "pirouette/camera/inverse_perspective_map.h"
 
+#include <algorithm>
 #include <cassert>
 
 namespace pirouette::camera {
@@ -28,6 +29,15 @@ std::optional<Eigen::Vector2f> InversePerspectiveMap::At(int u, int v) const {
 std::size_t InversePerspectiveMap::Index(int u, int v) const {
   assert(u >= 0 && u < width_ && v >= 0 && v < height_);
   return static_cast<std::size_t>(v) * width_ + u;
+}
+
+double NearRange(const InversePerspectiveMap& ipm) {
+  double near = 0.0;
+  const int v = ipm.height() - 1;
+  for (int u = 0; u < ipm.width(); ++u) {
+    if (const auto p = ipm.At(u, v)) near = std::max(near, static_cast<double>(p->norm()));
+  }
+  return near;
 }
 
 }  // namespace pirouette::camera

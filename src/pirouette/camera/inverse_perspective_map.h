@@ -32,4 +32,8 @@ class InversePerspectiveMap {
   std::vector<std::uint8_t> sees_floor_;
 };
 
+// The range of the farthest floor point the image's bottom row sees: nearer
+// than this, some bearings of the camera see no floor at all.
+double NearRange(const InversePerspectiveMap& ipm);
+
 }  // namespace pirouette::camera

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/io/camera_file.h"
 
 namespace pirouette::camera {
 namespace {
@@ -131,6 +133,14 @@ TEST(InversePerspectiveMapTest, TableEqualsFloorPointOfADistortedCamera) {
   }
   EXPECT_GT(seen, camera.width() * camera.height() / 2);
   EXPECT_LT(seen, camera.width() * camera.height());
+}
+
+TEST(InversePerspectiveMapTest, NearRangeOfThePapersCameraIsAboutElevenCentimetres) {
+  const camera::CameraModel camera =
+      io::LoadCameraFile(std::string(PIROUETTE_WORLDS_DIR) + "/yujin.yaml");
+  const double near = NearRange(InversePerspectiveMap(camera));
+  EXPECT_GT(near, 0.08);
+  EXPECT_LT(near, 0.14);
 }
 
 }  // namespace

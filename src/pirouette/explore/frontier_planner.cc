@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "pirouette/explore/distance_transform.h"
+#include "pirouette/explore/goal_memory.h"
 #include "pirouette/explore/path.h"
 
 namespace pirouette::explore {
@@ -52,13 +53,6 @@ std::optional<core::CellIndex> NearestFree(const mapping::TrinaryMap& map,
   return std::nullopt;
 }
 
-bool OnBlacklist(const std::vector<Eigen::Vector2d>& blacklist, const Eigen::Vector2d& goal,
-                 double tolerance_m) {
-  return std::any_of(blacklist.begin(), blacklist.end(), [&](const Eigen::Vector2d& b) {
-    return std::abs(b.x() - goal.x()) < tolerance_m && std::abs(b.y() - goal.y()) < tolerance_m;
-  });
-}
-
 class FrontierPlanner final : public Planner {
  public:
   FrontierPlanner(const PlannerOptions& options, const FrontierOptions& frontier_options)
@@ -78,8 +72,7 @@ class FrontierPlanner final : public Planner {
         frontier_options_.blacklist_tolerance_cells * map.geometry.resolution();
     const CoarseGrid grid = PlanningGrid(map, options_);
     const core::CellIndex start = grid.geometry().CellOf(robot);
-    const bool stalled = last_ && last_->stay &&
-                         (robot - last_->robot_world).norm() < 0.5 * map.geometry.resolution();
+    const bool stalled = goals_.Stalled(robot, 0.5 * map.geometry.resolution());
     for (const Frontier& frontier : FindFrontiers(map, robot, frontier_options_)) {
       // The centroid, or if it cannot be reached, the cell nearest the robot
       // whose coarse cell is not blocked.
@@ -88,30 +81,24 @@ class FrontierPlanner final : public Planner {
       std::vector<Eigen::Vector2d> targets = {frontier.centroid_world};
       if (near) targets.push_back(*near);
       for (const Eigen::Vector2d& target : targets) {
-        if (OnBlacklist(blacklist_, target, tolerance_m)) continue;
+        if (goals_.GaveUp(target, tolerance_m)) continue;
         std::optional<Plan> plan = PlanTo(grid, start, robot, target);
         if (!plan) continue;
-        if (stalled && (target - last_->goal_world).norm() < tolerance_m) {
-          blacklist_.push_back(target);
+        if (stalled && goals_.NearLastGoal(target, tolerance_m)) {
+          goals_.GiveUp(target);
           continue;
         }
-        last_ = Last{robot, plan->goal_world, plan->waypoints_world.empty()};
+        goals_.Remember(robot, plan->goal_world, plan->waypoints_world.empty());
         return plan;
       }
     }
-    last_.reset();
+    goals_.Forget();
     return std::nullopt;
   }
 
-  void ReportUnreachable(const Plan& plan) override { blacklist_.push_back(plan.goal_world); }
+  void ReportUnreachable(const Plan& plan) override { goals_.GiveUp(plan.goal_world); }
 
  private:
-  struct Last {
-    Eigen::Vector2d robot_world;
-    Eigen::Vector2d goal_world;
-    bool stay;  // the plan had no waypoints
-  };
-
   // The centre of the frontier's cell nearest the robot among those whose
   // coarse cell is not blocked, if any.
   static std::optional<Eigen::Vector2d> NearestOpenCell(const core::GridGeometry& map,
@@ -154,8 +141,7 @@ class FrontierPlanner final : public Planner {
 
   PlannerOptions options_;
   FrontierOptions frontier_options_;
-  std::vector<Eigen::Vector2d> blacklist_;  // goals given up
-  std::optional<Last> last_;
+  GoalMemory goals_;
 };
 
 }  // namespace

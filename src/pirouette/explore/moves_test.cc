@@ -70,6 +70,20 @@ TEST(MovesTest, RepeatedAndEmptyWaypointsMakeNoMoves) {
   ExpectMove(moves[0], Move::Kind::kStraight, 0.2);
 }
 
+TEST(MovesTest, MergeCollinearKeepsTurnsAndTheLastWaypoint) {
+  const std::vector<Eigen::Vector2d> merged =
+      MergeCollinear({0.0, 0.0}, {{0.1, 0.0}, {0.2, 0.0}, {0.2, 0.1}, {0.2, 0.2}});
+  ASSERT_EQ(merged.size(), 2U);
+  EXPECT_EQ(merged[0], Eigen::Vector2d(0.2, 0.0));
+  EXPECT_EQ(merged[1], Eigen::Vector2d(0.2, 0.2));
+  // A bend of 0.5° is a turn, not a straight run.
+  const double bend = core::DegToRad(0.5);
+  EXPECT_EQ(
+      MergeCollinear({0.0, 0.0}, {{0.1, 0.0}, {0.1 + 0.1 * std::cos(bend), 0.1 * std::sin(bend)}})
+          .size(),
+      2U);
+}
+
 TEST(MovesTest, FollowingTheMovesEndsAtTheLastWaypoint) {
   const core::Pose2 start(0.05, -0.02, 2.0);
   const std::vector<Eigen::Vector2d> waypoints = {{0.1, 0.1},  {0.2, 0.2},  {0.2, 0.3},

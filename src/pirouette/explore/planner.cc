@@ -5,6 +5,7 @@
 
 #include "pirouette/explore/configuration_space.h"
 #include "pirouette/explore/distance_transform.h"
+#include "pirouette/explore/goal_memory.h"
 
 namespace pirouette::explore {
 namespace {
@@ -43,44 +44,36 @@ class DistanceTransformPlanner final : public Planner {
     CoarseGrid grid = PlanningGrid(map, options_);
     const core::CellIndex start = RobotCell(grid.geometry(), robot);
     // The last plan told the robot to pirouette where it stands.
-    const bool stalled = last_ && last_->stay &&
-                         (robot - last_->robot_world).norm() < 0.5 * map.geometry.resolution();
+    const bool stalled = goals_.Stalled(robot, 0.5 * map.geometry.resolution());
     while (true) {
-      for (const Eigen::Vector2d& p : blacklist_) {
+      for (const Eigen::Vector2d& p : goals_.given_up()) {
         const std::optional<core::CellIndex> c = grid.geometry().CellAt(p);
         if (c && grid.At(*c) == CoarseCell::kGoal) grid.Set(*c, CoarseCell::kBlocked);
       }
       const DistanceField field = ChamferDistanceTransform(grid);
       const std::optional<Path> path = SteepestDescent(grid, field, start);
       if (!path) {
-        last_.reset();
+        goals_.Forget();
         return std::nullopt;
       }
       Plan plan = PlanAlong(grid, *path, robot, false);
       plan.goal_world = grid.geometry().CellCentre(path->goal);
-      if (stalled && plan.goal_world == last_->goal_world) {
+      if (stalled && goals_.IsLastGoal(plan.goal_world)) {
         // Its pirouette there did not clear the goal: give it up, like
         // explore_lite's progress timeout.
-        blacklist_.push_back(plan.goal_world);
+        goals_.GiveUp(plan.goal_world);
         continue;
       }
-      last_ = Last{robot, plan.goal_world, plan.waypoints_world.empty()};
+      goals_.Remember(robot, plan.goal_world, plan.waypoints_world.empty());
       return plan;
     }
   }
 
-  void ReportUnreachable(const Plan& plan) override { blacklist_.push_back(plan.goal_world); }
+  void ReportUnreachable(const Plan& plan) override { goals_.GiveUp(plan.goal_world); }
 
  private:
-  struct Last {
-    Eigen::Vector2d robot_world;
-    Eigen::Vector2d goal_world;
-    bool stay;  // the plan had no waypoints
-  };
-
   PlannerOptions options_;
-  std::vector<Eigen::Vector2d> blacklist_;  // goals given up, as their cells' centres
-  std::optional<Last> last_;                // the robot's position and goal at the last plan
+  GoalMemory goals_;  // goals given up, as their cells' centres
 };
 
 }  // namespace

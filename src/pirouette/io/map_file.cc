@@ -20,6 +20,7 @@
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/yaml_fields.h"
+#include "pirouette/mapping/occupancy_grid.h"
 
 namespace pirouette::io {
 namespace {
@@ -270,8 +271,8 @@ std::string RosMapYaml(const mapping::TrinaryMap& map, const std::string& image_
   return fmt::format(
       "image: {}\nmode: trinary\nresolution: {}\norigin: [{}, {}, 0]\nnegate: 0\n"
       "occupied_thresh: {}\nfree_thresh: {}\n",
-      YamlScalar(image_name), g.resolution(), g.origin().x(), g.origin().y(), kOccupiedThresh,
-      kFreeThresh);
+      YamlScalar(image_name), g.resolution(), g.origin().x(), g.origin().y(),
+      mapping::kOccupiedThreshold, mapping::kFreeThreshold);
 }
 
 std::string RosMapPgm(const mapping::TrinaryMap& map) {

@@ -9,11 +9,10 @@
 
 namespace pirouette::io {
 
-// The thresholds written to every map.yaml: with them map_server reads 254 as
-// free, 0 as occupied and 205 as unknown ((255 - 205) / 255 = 0.19608 lies
-// between them).
-inline constexpr double kOccupiedThresh = 0.65;
-inline constexpr double kFreeThresh = 0.196;
+// The thresholds written to every map.yaml are the grid's own
+// (mapping::kOccupiedThreshold, mapping::kFreeThreshold): with them
+// map_server reads 254 as free, 0 as occupied and 205 as unknown
+// ((255 - 205) / 255 = 0.19608 lies between them).
 
 // The pixel values of map.pgm.
 inline constexpr unsigned char kPgmFree = 254;

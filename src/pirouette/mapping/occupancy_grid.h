@@ -43,10 +43,17 @@ struct OccupancyOptions {
 inline constexpr double kOccupiedThreshold = 0.65;
 inline constexpr double kFreeThreshold = 0.196;
 
-// Cell sizes (metres) for the robots the issue names: the paper's small robot
-// on its 1.5 m field, and the apartment robot.
-inline constexpr double kPaperRobotCellSizeM = 0.01;
-inline constexpr double kApartmentRobotCellSizeM = 0.02;
+// The map's cell by default (metres): 1 cm for a robot as small as the
+// paper's (radius under kSmallRobotRadiusM), where a cell is a tenth of the
+// robot's width; 2 cm for a larger one, where 1 cm cells would quadruple the
+// grid's cells (and the planner's and the update's work) for detail its
+// camera cannot resolve at range (camera::MaxRange grows with the cell).
+inline constexpr double kSmallRobotCellM = 0.01;
+inline constexpr double kLargeRobotCellM = 0.02;
+inline constexpr double kSmallRobotRadiusM = 0.1;
+inline double DefaultCellSize(double robot_radius_m) {
+  return robot_radius_m < kSmallRobotRadiusM ? kSmallRobotCellM : kLargeRobotCellM;
+}
 
 // log(p / (1 - p)) and its inverse.
 double ProbabilityToLogOdds(double probability);

@@ -1,11 +1,11 @@
-#include "pirouette/app/look_ahead.h"
+#include "pirouette/explore/look_ahead.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "pirouette/core/geometry2.h"
 
-namespace pirouette::app {
+namespace pirouette::explore {
 
 double LookAhead::LongestCheckedMove() const {
   return std::max(0.0, options_.max_range_m - options_.radius_m);
@@ -40,31 +40,4 @@ LookAhead::Finding LookAhead::Blocking(const core::ObstacleProfile& profile,
   return finding;
 }
 
-double NearRange(const camera::InversePerspectiveMap& ipm) {
-  double near = 0.0;
-  const int v = ipm.height() - 1;
-  for (int u = 0; u < ipm.width(); ++u) {
-    if (const auto p = ipm.At(u, v)) near = std::max(near, static_cast<double>(p->norm()));
-  }
-  return near;
-}
-
-bool CorridorKnownFree(const mapping::TrinaryMap& map, const Eigen::Vector2d& from,
-                       const Eigen::Vector2d& to, double radius_m) {
-  const core::GridGeometry& g = map.geometry;
-  const double reach = radius_m + 0.5 * g.resolution();
-  const Eigen::Vector2d lo = from.cwiseMin(to) - Eigen::Vector2d(reach, reach);
-  const Eigen::Vector2d hi = from.cwiseMax(to) + Eigen::Vector2d(reach, reach);
-  const core::CellIndex a = g.CellOf(lo);
-  const core::CellIndex b = g.CellOf(hi);
-  for (int y = a.y; y <= b.y; ++y) {
-    for (int x = a.x; x <= b.x; ++x) {
-      const core::CellIndex c{x, y};
-      if (core::DistanceToSegment(g.CellCentre(c), from, to) > reach) continue;
-      if (!g.Contains(c) || map.At(c) != mapping::CellState::kFree) return false;
-    }
-  }
-  return true;
-}
-
-}  // namespace pirouette::app
+}  // namespace pirouette::explore

@@ -3,11 +3,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/core/obstacle_profile.h"
-#include "pirouette/mapping/trinary_map.h"
 
-namespace pirouette::app {
+namespace pirouette::explore {
 
 struct LookAheadOptions {
   double radius_m = 0.0;     // the robot's disc
@@ -55,13 +53,4 @@ class LookAhead {
   LookAheadOptions options_;
 };
 
-// The range of the farthest floor point the image's bottom row sees: nearer
-// than this, some bearings of the camera see no floor at all.
-double NearRange(const camera::InversePerspectiveMap& ipm);
-
-// True when every cell whose centre lies within radius_m (plus half a cell)
-// of the segment from -> to is known free in `map`.
-bool CorridorKnownFree(const mapping::TrinaryMap& map, const Eigen::Vector2d& from,
-                       const Eigen::Vector2d& to, double radius_m);
-
-}  // namespace pirouette::app
+}  // namespace pirouette::explore

@@ -1,50 +1,26 @@
-#include "pirouette/app/global_localization.h"
+#include "pirouette/localize/locate.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/localize/map_view.h"
 #include "pirouette/mapping/radial_profile.h"
+#include "pirouette/testing/walled_room.h"
 
-namespace pirouette::app {
+namespace pirouette::localize {
 namespace {
 
-constexpr double kCell = 0.02;
 constexpr double kMaxRange = 0.8;
 
-// A 1.0 m by 0.6 m room walled all round (one cell thick): the same turned
-// by 180 degrees about its centre. Its west wall is red, its east wall blue,
-// the others grey.
-struct Room {
-  mapping::TrinaryMap map{core::GridGeometry(kCell, Eigen::Vector2d::Zero(), 50, 30), {}};
-  localize::ColourMap colours;
-};
-
-Room MakeRoom() {
-  Room room;
-  const core::GridGeometry& g = room.map.geometry;
-  room.map.cells.assign(g.CellCount(), mapping::CellState::kFree);
-  std::vector<core::ColourClass> colours(g.CellCount(), core::ColourClass::kNone);
-  for (int y = 0; y < g.height(); ++y) {
-    for (int x = 0; x < g.width(); ++x) {
-      const bool west = x == 0;
-      const bool east = x == g.width() - 1;
-      if (!west && !east && y != 0 && y != g.height() - 1) continue;
-      room.map.cells[g.Flat({x, y})] = mapping::CellState::kOccupied;
-      colours[g.Flat({x, y})] = west   ? core::ColourClass::kHue0
-                                : east ? core::ColourClass::kHue8
-                                       : core::ColourClass::kGrey;
-    }
-  }
-  room.colours = localize::ColourMap(g, std::move(colours));
-  return room;
-}
+using testing::MakeWalledRoom;
+using Room = testing::WalledRoom;
 
 // What a perfect pirouette at `pose` would see: the map's own view, in the
 // robot's frame.
 struct Query {
-  localize::PlaceView view;
+  PlaceView view;
   std::vector<core::ReadingKind> kinds;
 };
 
@@ -62,8 +38,8 @@ Query ViewFrom(const Room& room, const core::Pose2& pose) {
   return q;
 }
 
-TEST(GlobalLocalizationTest, ColoursTellASymmetricRoomFromItsMirrorImage) {
-  const Room room = MakeRoom();
+TEST(LocateTest, ColoursTellASymmetricRoomFromItsMirrorImage) {
+  const Room room = MakeWalledRoom();
   const core::Pose2 truth(0.30, 0.25, core::DegToRad(20.0));
   const Query q = ViewFrom(room, truth);
   constexpr double kSpacing = 0.1;
@@ -73,16 +49,15 @@ TEST(GlobalLocalizationTest, ColoursTellASymmetricRoomFromItsMirrorImage) {
 
   // Ranges alone: the pose and its mirror, (0.70, 0.35, 200 deg), agree as
   // well with the map, so the answer is "cannot tell".
-  const localize::ColourMap none;
-  const localize::PlaceTable grey = BuildMapPlaceTable(room.map, none, 0.04, kSpacing, kMaxRange);
+  const ColourMap none;
+  const PlaceTable grey = BuildMapPlaceTable(room.map, none, 0.04, kSpacing, kMaxRange);
   const LocateAnswer blind =
       Locate(room.map, none, grey, q.view, q.kinds, kSpacing, kCoarse, options);
   EXPECT_FALSE(blind.found);
   EXPECT_NE(blind.reason.find("ambiguous"), std::string::npos) << blind.reason;
 
   // With the colour layer the mirror sees blue where the pirouette saw red.
-  const localize::PlaceTable coloured =
-      BuildMapPlaceTable(room.map, room.colours, 0.04, kSpacing, kMaxRange);
+  const PlaceTable coloured = BuildMapPlaceTable(room.map, room.colours, 0.04, kSpacing, kMaxRange);
   const LocateAnswer seen =
       Locate(room.map, room.colours, coloured, q.view, q.kinds, kSpacing, kCoarse, options);
   ASSERT_TRUE(seen.found) << seen.reason;
@@ -93,14 +68,14 @@ TEST(GlobalLocalizationTest, ColoursTellASymmetricRoomFromItsMirrorImage) {
   EXPECT_GT(seen.agreement - seen.runner_up, 0.08);
 }
 
-TEST(GlobalLocalizationTest, TheTableNameChangesWithTheColours) {
-  const Room room = MakeRoom();
+TEST(LocateTest, TheTableNameChangesWithTheColours) {
+  const Room room = MakeWalledRoom();
   EXPECT_NE(MapTableName(room.map, {}, 0.04, 0.1, kMaxRange),
             MapTableName(room.map, room.colours, 0.04, 0.1, kMaxRange));
 }
 
-TEST(GlobalLocalizationTest, TheMapViewHasItsHitsColours) {
-  const Room room = MakeRoom();
+TEST(LocateTest, TheMapViewHasItsHitsColours) {
+  const Room room = MakeWalledRoom();
   const MapView v = CastMapView(room.map, {0.5, 0.3}, kMaxRange, room.colours);
   ASSERT_EQ(v.colours.size(), 360u);
   EXPECT_EQ(v.colours[0], core::ColourClass::kHue8);    // east, 0.48 m
@@ -109,8 +84,8 @@ TEST(GlobalLocalizationTest, TheMapViewHasItsHitsColours) {
   EXPECT_TRUE(CastMapView(room.map, {0.5, 0.3}, kMaxRange).colours.empty());
 }
 
-TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle) {
-  Room room = MakeRoom();
+TEST(LocateTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle) {
+  Room room = MakeWalledRoom();
   const core::GridGeometry& g = room.map.geometry;
   std::vector<core::ColourClass> colours = room.colours.cells();
   // A block of cells x 35..39, y 13..17: its outline occupied (hue 4), its
@@ -130,7 +105,7 @@ TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle
   for (int y = 20; y <= 22; ++y) room.map.cells[g.Flat({25, y})] = mapping::CellState::kUnknown;
   room.map.cells[g.Flat({22, 10})] = mapping::CellState::kOccupied;
   room.map.cells[g.Flat({21, 11})] = mapping::CellState::kUnknown;
-  room.colours = localize::ColourMap(g, std::move(colours));
+  room.colours = ColourMap(g, std::move(colours));
 
   const MapView v = CastMapView(room.map, {0.51, 0.31}, kMaxRange, room.colours);
   EXPECT_EQ(v.kinds[0], MapRayKind::kHit);  // east, through the hole
@@ -142,8 +117,8 @@ TEST(GlobalLocalizationTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle
   EXPECT_NEAR(v.ranges_m[225], 0.10, 0.01);
 }
 
-TEST(GlobalLocalizationTest, PinholesInSeenFloorAreFilledAndTheRestKept) {
-  Room room = MakeRoom();
+TEST(LocateTest, ARayPassesFilledPinholes) {
+  Room room = MakeWalledRoom();
   const core::GridGeometry& g = room.map.geometry;
   const auto set = [&](int x, int y, mapping::CellState s) { room.map.cells[g.Flat({x, y})] = s; };
   set(10, 10, mapping::CellState::kUnknown);  // a pinhole
@@ -152,24 +127,13 @@ TEST(GlobalLocalizationTest, PinholesInSeenFloorAreFilledAndTheRestKept) {
   set(20, 11, mapping::CellState::kUnknown);
   set(21, 11, mapping::CellState::kUnknown);
   for (int x = 30; x <= 34; ++x) set(x, 10, mapping::CellState::kUnknown);  // 5 cells: kept
-  set(10, 20, mapping::CellState::kUnknown);  // beside an obstacle cell: kept
-  set(11, 21, mapping::CellState::kOccupied);
-  set(1, 15, mapping::CellState::kUnknown);  // beside the west wall: kept
-
-  const mapping::TrinaryMap filled = FillPinholes(room.map, 4);
-  EXPECT_EQ(filled.At({10, 10}), mapping::CellState::kFree);
-  EXPECT_EQ(filled.At({21, 11}), mapping::CellState::kFree);
-  EXPECT_EQ(filled.At({32, 10}), mapping::CellState::kUnknown);
-  EXPECT_EQ(filled.At({10, 20}), mapping::CellState::kUnknown);
-  EXPECT_EQ(filled.At({1, 15}), mapping::CellState::kUnknown);
-  EXPECT_EQ(filled.At({11, 21}), mapping::CellState::kOccupied);
-  // A ray east along row 10 stopped at the first pinhole; it now passes both
-  // and stops at the group of 5.
+  // A ray east along row 10 stops at the first pinhole; once they are filled
+  // it passes both and stops at the group of 5.
   EXPECT_NEAR(CastMapView(room.map, {0.05, 0.21}, kMaxRange).ranges_m[0], 0.15, 0.01);
-  const MapView v = CastMapView(filled, {0.05, 0.21}, kMaxRange);
+  const MapView v = CastMapView(mapping::FillPinholes(room.map, 4), {0.05, 0.21}, kMaxRange);
   EXPECT_EQ(v.kinds[0], MapRayKind::kUnknown);
   EXPECT_NEAR(v.ranges_m[0], 0.55, 0.01);
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::localize

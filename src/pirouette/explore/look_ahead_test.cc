@@ -1,4 +1,4 @@
-#include "pirouette/app/look_ahead.h"
+#include "pirouette/explore/look_ahead.h"
 
 #include <gtest/gtest.h>
 
@@ -7,9 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pirouette/io/camera_file.h"
-
-namespace pirouette::app {
+namespace pirouette::explore {
 namespace {
 
 using core::ReadingKind;
@@ -72,28 +70,5 @@ TEST(LookAheadTest, SomethingFillingTheViewAheadIsBlind) {
   EXPECT_EQ(PaperLook().Blocking(profile, 0.30).verdict, LookVerdict::kBlocked);
 }
 
-TEST(LookAheadTest, NearRangeOfThePapersCameraIsAboutElevenCentimetres) {
-  const camera::CameraModel camera =
-      io::LoadCameraFile(std::string(PIROUETTE_WORLDS_DIR) + "/yujin.yaml");
-  const double near = NearRange(camera::InversePerspectiveMap(camera));
-  EXPECT_GT(near, 0.08);
-  EXPECT_LT(near, 0.14);
-}
-
-TEST(LookAheadTest, CorridorKnownFreeNeedsEveryCellAlongTheDiscFree) {
-  mapping::TrinaryMap map{core::GridGeometry(0.01, Eigen::Vector2d::Zero(), 50, 20), {}};
-  map.cells.assign(map.geometry.CellCount(), mapping::CellState::kFree);
-  const Eigen::Vector2d from(0.10, 0.10);
-  const Eigen::Vector2d to(0.40, 0.10);
-  EXPECT_TRUE(CorridorKnownFree(map, from, to, 0.04));
-  // An unknown cell 3 cm beside the path, inside the disc's sweep.
-  map.cells[map.geometry.Flat({25, 13})] = mapping::CellState::kUnknown;
-  EXPECT_FALSE(CorridorKnownFree(map, from, to, 0.04));
-  // The same cell is outside a thinner robot's sweep.
-  EXPECT_TRUE(CorridorKnownFree(map, from, to, 0.02));
-  // A corridor leaving the map is not known free.
-  EXPECT_FALSE(CorridorKnownFree(map, from, Eigen::Vector2d(0.10, 0.19), 0.04));
-}
-
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::explore
