@@ -8,11 +8,12 @@
 #include <cmath>
 #include <string>
 
-#include "pirouette/app/exploration.h"
-#include "pirouette/app/map_evaluation.h"
+#include "pirouette/eval/map_evaluation.h"
 #include "pirouette/io/world_file.h"
+#include "pirouette/run/explorer.h"
+#include "pirouette/run/simulated_exploration.h"
 
-namespace pirouette::app {
+namespace pirouette::run {
 namespace {
 
 std::string WorldPath(const std::string& name) {
@@ -21,11 +22,11 @@ std::string WorldPath(const std::string& name) {
 
 void ExpectExploredWithinBounds(const std::string& name, PlannerKind planner) {
   const sim::World world = io::LoadWorldFile(WorldPath(name));
-  ExplorationOptions options;
+  run::ExplorationOptions options;
   options.seed = 1;
   options.planner = planner;
   const ExplorationResult result = Explore(world, options);
-  const MapEvaluation eval = EvaluateMap(result.grid.ToTrinary(), world);
+  const eval::MapEvaluation eval = eval::EvaluateMap(result.grid.ToTrinary(), world);
   const double cell = result.grid.geometry().resolution();
   EXPECT_EQ(result.status, "complete") << name << ": " << result.reason;
   EXPECT_GE(eval.coverage, 0.98) << name;
@@ -34,7 +35,7 @@ void ExpectExploredWithinBounds(const std::string& name, PlannerKind planner) {
   EXPECT_LE(eval.wall_error_m, cell) << name;
   EXPECT_GT(result.pirouettes, 1) << name;
   // Every pirouette's frames, and a look before every straight move.
-  EXPECT_GE(result.frames, result.pirouettes * options.pirouette_turns + result.moves) << name;
+  EXPECT_GE(result.frames, result.pirouettes * core::kPirouetteTurns + result.moves) << name;
 }
 
 TEST(ExplorationTest, SoccerFieldIsMappedCompletely) {
@@ -51,7 +52,7 @@ TEST(ExplorationTest, FrontierBaselineMapsTheSoccerField) {
 
 TEST(ExplorationTest, ReturnHomeEndsWhereItStarted) {
   const sim::World world = io::LoadWorldFile(WorldPath("two_rooms"));
-  ExplorationOptions options;
+  run::ExplorationOptions options;
   options.return_home = true;
   const ExplorationResult result = Explore(world, options);
   EXPECT_EQ(result.status, "complete") << result.reason;
@@ -63,7 +64,7 @@ TEST(ExplorationTest, ReturnHomeEndsWhereItStarted) {
 
 TEST(ExplorationTest, SameWorldAndSeedGiveTheSameMap) {
   const sim::World world = io::LoadWorldFile(WorldPath("soccer_field"));
-  ExplorationOptions options;
+  run::ExplorationOptions options;
   options.seed = 3;
   options.max_steps = 15;
   const ExplorationResult a = Explore(world, options);
@@ -78,7 +79,7 @@ TEST(ExplorationTest, SameWorldAndSeedGiveTheSameMap) {
 
 TEST(ExplorationTest, StepLimitStopsTheRun) {
   const sim::World world = io::LoadWorldFile(WorldPath("soccer_field"));
-  ExplorationOptions options;
+  run::ExplorationOptions options;
   options.max_steps = 3;
   const ExplorationResult result = Explore(world, options);
   EXPECT_EQ(result.status, "step-limit");
@@ -88,7 +89,7 @@ TEST(ExplorationTest, StepLimitStopsTheRun) {
 TEST(ExplorationTest, AStopRequestEndsTheRunWithTheMapSoFar) {
   const sim::World world = io::LoadWorldFile(WorldPath("soccer_field"));
   const std::atomic<bool> stop{true};
-  ExplorationOptions options;
+  run::ExplorationOptions options;
   options.stop_requested = &stop;
   const ExplorationResult result = Explore(world, options);
   EXPECT_EQ(result.status, "interrupted");
@@ -99,4 +100,4 @@ TEST(ExplorationTest, AStopRequestEndsTheRunWithTheMapSoFar) {
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::run

@@ -10,11 +10,12 @@
 
 #include <cstdint>
 
-#include "pirouette/app/exploration.h"
-#include "pirouette/app/map_evaluation.h"
+#include "pirouette/eval/map_evaluation.h"
 #include "pirouette/io/world_file.h"
+#include "pirouette/run/explorer.h"
+#include "pirouette/run/simulated_exploration.h"
 
-namespace pirouette::app {
+namespace pirouette::run {
 namespace {
 
 ExplorationResult ExploreWith(const sim::World& world, LocalizeKind localize, double noise,
@@ -30,7 +31,7 @@ TEST(LocalizationLoopTest, TrackingWithoutOdometryNoiseKeepsTheMapTrue) {
   const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
   const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.0);
   EXPECT_EQ(result.status, "complete");
-  const MapEvaluation eval = EvaluateMap(result.grid.ToTrinary(), world);
+  const eval::MapEvaluation eval = eval::EvaluateMap(result.grid.ToTrinary(), world);
   EXPECT_GE(eval.coverage, 0.95);
   EXPECT_LE(eval.false_free, 0.05);
   EXPECT_LE(eval.wall_error_m, 0.02);
@@ -52,8 +53,8 @@ TEST(LocalizationLoopTest, TrackingTakesOutMostOfThePoseErrorOfNoisyOdometry) {
   EXPECT_LT(scan.pose_error->mean_m, 0.5 * none.pose_error->mean_m);
   EXPECT_GT(scan.scan_matches, 0);
   EXPECT_EQ(scan.status, "complete");
-  const MapEvaluation none_eval = EvaluateMap(none.grid.ToTrinary(), world);
-  const MapEvaluation scan_eval = EvaluateMap(scan.grid.ToTrinary(), world);
+  const eval::MapEvaluation none_eval = eval::EvaluateMap(none.grid.ToTrinary(), world);
+  const eval::MapEvaluation scan_eval = eval::EvaluateMap(scan.grid.ToTrinary(), world);
   EXPECT_LE(scan_eval.false_free, 0.03);
   EXPECT_LT(scan_eval.false_free, 0.25 * none_eval.false_free);
   // Without tracking nothing is matched.
@@ -73,4 +74,4 @@ TEST(LocalizationLoopTest, ARobotStuckAgainstAWallBacksOffAndGoesOn) {
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::run

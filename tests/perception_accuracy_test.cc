@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "pirouette/app/perception_eval.h"
+#include "pirouette/eval/perception_eval.h"
 
-namespace pirouette::app {
+namespace pirouette::eval {
 namespace {
 
 struct Bounds {
@@ -46,16 +46,16 @@ double Quantile(std::vector<double> values, double q) {
 }
 
 void ExpectAccuracy(vision::MaskSource method, const Bounds& bounds) {
-  PerceptionEvalRequest request;
+  eval::PerceptionEvalRequest request;
   for (const char* world : {"soccer_field", "cluttered_room", "maze", "two_rooms", "apartment"}) {
     request.world_paths.push_back(std::string(PIROUETTE_WORLDS_DIR) + "/" + world + ".yaml");
   }
   request.method = method;
   request.poses = 3;
   request.seed = 1;
-  const std::vector<WorldPerception> worlds = EvaluatePerception(request);
+  const std::vector<eval::WorldPerception> worlds = eval::EvaluatePerception(request);
   ASSERT_EQ(worlds.size(), 5u);
-  ProfileComparison all;
+  eval::ProfileComparison all;
   std::string per_world;  // the wrong-class rates, for the failure message
   for (const WorldPerception& w : worlds) {
     per_world += " " + w.world_name + " " + std::to_string(w.comparison.WrongClassRate());
@@ -81,4 +81,4 @@ TEST(PerceptionAccuracyTest, PaperMethodInEveryShippedWorld) {
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::eval

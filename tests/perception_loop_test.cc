@@ -12,19 +12,19 @@
 #include <string>
 #include <vector>
 
-#include "pirouette/app/perception_eval.h"
+#include "pirouette/eval/perception_eval.h"
 
-namespace pirouette::app {
+namespace pirouette::eval {
 namespace {
 
 TEST(PerceptionLoopTest, TrueMasksGiveTheTruthInEveryShippedWorld) {
-  PerceptionEvalRequest request;
+  eval::PerceptionEvalRequest request;
   for (const char* world : {"soccer_field", "cluttered_room", "maze", "two_rooms", "apartment"}) {
     request.world_paths.push_back(std::string(PIROUETTE_WORLDS_DIR) + "/" + world + ".yaml");
   }
   request.method = vision::MaskSource::kTruth;
   request.poses = 2;
-  const std::vector<WorldPerception> worlds = EvaluatePerception(request);
+  const std::vector<eval::WorldPerception> worlds = eval::EvaluatePerception(request);
   ASSERT_EQ(worlds.size(), 5u);
   for (const WorldPerception& w : worlds) {
     EXPECT_EQ(w.frames, 24) << w.world_name;
@@ -41,4 +41,4 @@ TEST(PerceptionLoopTest, TrueMasksGiveTheTruthInEveryShippedWorld) {
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::eval

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-#include "pirouette/app/segmentation_eval.h"
+#include "pirouette/eval/segmentation_eval.h"
 
 namespace pirouette {
 namespace {
@@ -15,12 +15,12 @@ namespace {
 const std::string kVisarDir = std::string(PIROUETTE_SHARED_DIR) + "/realdata/visar";
 
 double MeanIou(vision::SegmentationMethod method, int first, int last) {
-  app::SegmentationEvalRequest request;
+  eval::SegmentationEvalRequest request;
   request.images_dir = kVisarDir;
   request.method = method;
   request.first = first;
   request.last = last;
-  return app::EvaluateSegmentation(request).mean_iou;
+  return eval::EvaluateSegmentation(request).mean_iou;
 }
 
 class RealdataSegmentationTest : public ::testing::Test {

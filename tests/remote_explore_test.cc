@@ -19,14 +19,14 @@
 #include <thread>
 #include <vector>
 
-#include "pirouette/app/explore_run.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
+#include "pirouette/run/explore_job.h"
 #include "pirouette/testing/fake_robot.h"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
 
-namespace pirouette::app {
+namespace pirouette::run {
 namespace {
 
 namespace fs = std::filesystem;
@@ -243,4 +243,4 @@ TEST_F(RemoteExploreTest, NoRobotThereIsAnErrorBeforeAnyOutput) {
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::run

@@ -10,11 +10,11 @@
 #include <iterator>
 #include <string>
 
-#include "pirouette/app/explore_run.h"
-#include "pirouette/app/log_mapping.h"
 #include "pirouette/io/run_log.h"
+#include "pirouette/run/explore_job.h"
+#include "pirouette/run/log_replay.h"
 
-namespace pirouette::app {
+namespace pirouette::run {
 namespace {
 
 namespace fs = std::filesystem;
@@ -38,7 +38,7 @@ class RunLogRoundTripTest : public ::testing::Test {
 // The maze makes the explorer find a move blocked and back up to see, so the
 // log's contact and blocked columns are exercised as well as its frames.
 TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
-  ExploreRequest explore;
+  run::ExploreRequest explore;
   explore.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/maze.yaml";
   explore.out_dir = (dir_ / "explore").string();
   explore.record_dir = (dir_ / "log").string();
@@ -54,7 +54,7 @@ TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
   for (const io::RunLogRow& row : log.rows) blocked += row.blocked_leg_m ? 1 : 0;
   EXPECT_LE(blocked, explored.result.blocked_looks);
 
-  MapLogRequest map;
+  run::MapLogRequest map;
   map.log_dir = explore.record_dir;
   map.out_dir = (dir_ / "map").string();
   map.quiet = true;
@@ -70,15 +70,15 @@ TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::run
 
-namespace pirouette::app {
+namespace pirouette::run {
 namespace {
 
 // With pose tracking and odometry noise the log records `localize: scan`,
 // and mapping it again tracks the same way: the same map.
 TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
-  ExploreRequest explore;
+  run::ExploreRequest explore;
   explore.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml";
   explore.out_dir = (dir_ / "explore").string();
   explore.record_dir = (dir_ / "log").string();
@@ -89,11 +89,11 @@ TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
   EXPECT_EQ(explored.run["localize"], "scan");
   EXPECT_EQ(io::ReadRunLog(explore.record_dir).info.localize, "scan");
 
-  MapLogRequest map;
+  run::MapLogRequest map;
   map.log_dir = explore.record_dir;
   map.out_dir = (dir_ / "map").string();
   map.quiet = true;
-  RunMapLog(map);
+  run::RunMapLog(map);
   EXPECT_EQ(ReadAll(dir_ / "map" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
   EXPECT_EQ(ReadAll(dir_ / "map" / "map.yaml"), ReadAll(dir_ / "explore" / "map.yaml"));
   EXPECT_EQ(ReadAll(dir_ / "map" / "map_colours.png"),
@@ -107,4 +107,4 @@ TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
 }
 
 }  // namespace
-}  // namespace pirouette::app
+}  // namespace pirouette::run

@@ -3,13 +3,13 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/camera_calibration.h"
+#include "pirouette/tools/calibrate.h"
 
 namespace pirouette::cli {
 namespace {
 
 // The JSON on standard output, the notes on standard error (SPEC.md).
-void Print(const app::CalibrationReport& report) {
+void Print(const tools::CalibrationReport& report) {
   for (const std::string& note : report.notes) std::fprintf(stderr, "%s\n", note.c_str());
   std::fputs(report.json.c_str(), stdout);
 }
@@ -31,7 +31,7 @@ Command AddCalibrateCommand(CLI::App& parent) {
       "9x6 --square 0.025 --out camera.yaml");
   cmd->require_subcommand(1);
 
-  auto intrinsics = std::make_shared<app::IntrinsicsCalibrationRequest>();
+  auto intrinsics = std::make_shared<tools::IntrinsicsCalibrationRequest>();
   CLI::App* in = cmd->add_subcommand(
       "intrinsics",
       "Find the chessboard in every image of a folder (sub-pixel corners; images where it is not "
@@ -57,7 +57,7 @@ Command AddCalibrateCommand(CLI::App& parent) {
                  "radial distortion coefficients to estimate: 2 (k1, k2; k3 = 0) or 3")
       ->capture_default_str();
 
-  auto vignetting = std::make_shared<app::VignettingCalibrationRequest>();
+  auto vignetting = std::make_shared<tools::VignettingCalibrationRequest>();
   CLI::App* vg = cmd->add_subcommand(
       "vignetting",
       "Fit the lens's vignetting (per channel R, G, B: the light passed falls as 1 / (1 + "
@@ -71,7 +71,7 @@ Command AddCalibrateCommand(CLI::App& parent) {
   vg->add_option("--camera", vignetting->camera_path, "the camera file to update (YAML)")
       ->required();
 
-  auto mount = std::make_shared<app::MountCalibrationRequest>();
+  auto mount = std::make_shared<tools::MountCalibrationRequest>();
   CLI::App* mt = cmd->add_subcommand(
       "mount",
       "Measure where the camera sits on the robot from one photo, taken by the robot's camera, of "
@@ -95,9 +95,9 @@ Command AddCalibrateCommand(CLI::App& parent) {
   mt->add_option("--camera", mount->camera_path, "the camera file to update (YAML)")->required();
 
   return {cmd, [in, vg, mt, intrinsics, vignetting, mount] {
-            if (in->parsed()) Print(app::CalibrateIntrinsics(*intrinsics));
-            if (vg->parsed()) Print(app::CalibrateVignetting(*vignetting));
-            if (mt->parsed()) Print(app::CalibrateMount(*mount));
+            if (in->parsed()) Print(tools::CalibrateIntrinsics(*intrinsics));
+            if (vg->parsed()) Print(tools::CalibrateVignetting(*vignetting));
+            if (mt->parsed()) Print(tools::CalibrateMount(*mount));
           }};
 }
 

@@ -9,13 +9,13 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
-#include "pirouette/app/live_capture.h"
 #include "pirouette/run/progress_line.h"
+#include "pirouette/tools/capture.h"
 
 namespace pirouette::cli {
 namespace {
 
-std::string ProgressText(const app::LiveCaptureProgress& p) {
+std::string ProgressText(const tools::LiveCaptureProgress& p) {
   std::string line =
       fmt::format("capture: {} frame{} (source frame {}), floor {:.0f}%, {:.0f} ms to segment",
                   p.frames, p.frames == 1 ? "" : "s", p.last->index, 100.0 * p.last->floor_fraction,
@@ -30,7 +30,7 @@ std::string ProgressText(const app::LiveCaptureProgress& p) {
 }  // namespace
 
 Command AddCaptureCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::LiveCaptureRequest>();
+  auto request = std::make_shared<tools::LiveCaptureRequest>();
   auto method = std::make_shared<std::string>("default");
   auto frames = std::make_shared<int>(0);
   auto max_range = std::make_shared<double>(0.0);
@@ -62,7 +62,7 @@ Command AddCaptureCommand(CLI::App& parent) {
   CLI::Option* frames_option =
       cmd->add_option("--frames", *frames,
                       "stop after this many frames used; 0: no limit (default: all of a file, " +
-                          std::to_string(app::kLiveDefaultFrames) + " of a device or stream)");
+                          std::to_string(tools::kLiveDefaultFrames) + " of a device or stream)");
   cmd->add_option("--every", request->every,
                   "use every k-th frame of the source; the others are skipped unseen")
       ->capture_default_str();
@@ -82,22 +82,22 @@ Command AddCaptureCommand(CLI::App& parent) {
               cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
             }
             request->stop_requested = StopOnInterrupt();
-            app::LiveCaptureResult result;
+            tools::LiveCaptureResult result;
             {
               run::ProgressLine progress(*quiet);
               const auto start = std::chrono::steady_clock::now();
-              result = app::RunLiveCapture(*request, [&](const app::LiveCaptureProgress& p) {
+              result = tools::RunLiveCapture(*request, [&](const tools::LiveCaptureProgress& p) {
                 if (p.last == nullptr) return;
                 const double elapsed =
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
                 progress.Show(elapsed, [&] { return ProgressText(p); });
               });
             }
-            std::fputs(app::LiveCaptureSummaryJson(*request, result).c_str(), stdout);
+            std::fputs(tools::LiveCaptureSummaryJson(*request, result).c_str(), stdout);
             if (!*quiet) {
               std::fprintf(
                   stderr, "capture: %zu frames (%s) in %s/, summary in %s/profiles.jsonl\n",
-                  result.frames.size(), std::string(app::CaptureStopName(result.stop)).c_str(),
+                  result.frames.size(), std::string(tools::CaptureStopName(result.stop)).c_str(),
                   request->out_dir.c_str(), request->out_dir.c_str());
             }
           }};

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/map_evaluation.h"
+#include "pirouette/eval/map_evaluation.h"
 #include "pirouette/io/map_file.h"
 #include "pirouette/io/world_file.h"
 
@@ -24,7 +24,7 @@ Command AddEvalCommand(CLI::App& parent) {
   return {cmd, [world_path, map_path] {
             const sim::World world = io::LoadWorldFile(*world_path);
             const mapping::TrinaryMap map = io::ReadRosMap(*map_path);
-            const std::string json = app::MapEvaluationJson(app::EvaluateMap(map, world));
+            const std::string json = eval::MapEvaluationJson(eval::EvaluateMap(map, world));
             std::fputs(json.c_str(), stdout);
           }};
 }

@@ -5,12 +5,12 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
-#include "pirouette/app/explore_run.h"
+#include "pirouette/run/explore_job.h"
 
 namespace pirouette::cli {
 
 Command AddExploreCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::ExploreRequest>();
+  auto request = std::make_shared<run::ExploreRequest>();
   auto planner = std::make_shared<std::string>("dt");
   auto method = std::make_shared<std::string>("default");
   auto localize = std::make_shared<std::string>("none");
@@ -95,13 +95,13 @@ Command AddExploreCommand(CLI::App& parent) {
                   "this new folder; `pirouette map --log DIR` maps it again");
   cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
   return {cmd, [request, planner, method, localize, noise, bias, noise_option, bias_option] {
-            request->options.localize = *app::ParseLocalizeKind(*localize);
+            request->options.localize = *run::ParseLocalizeKind(*localize);
             if (noise_option->count() > 0) request->odometry_noise = {(*noise)[0], (*noise)[1]};
             if (bias_option->count() > 0) request->odometry_bias = {(*bias)[0], (*bias)[1]};
-            request->options.planner = *app::ParsePlannerKind(*planner);
+            request->options.planner = *run::ParsePlannerKind(*planner);
             request->options.method = *vision::ParseMaskSource(*method);
             request->options.stop_requested = StopOnInterrupt();
-            const app::ExploreReport report = app::RunExplore(*request);
+            const run::ExploreReport report = run::RunExplore(*request);
             const std::string& status = report.result.status;
             if (!request->quiet) {
               std::fprintf(stderr, "explore: %s; map in %s/map.yaml\n", status.c_str(),

@@ -4,13 +4,13 @@
 #include <vector>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/explore_eval.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/tools/explore_eval.h"
 
 namespace pirouette::cli {
 
 Command AddExploreEvalCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::ExploreEvalRequest>();
+  auto request = std::make_shared<tools::ExploreEvalRequest>();
   auto planners =
       std::make_shared<std::vector<std::string>>(std::vector<std::string>{"dt", "frontier"});
   CLI::App* cmd = parent.add_subcommand(
@@ -30,22 +30,22 @@ Command AddExploreEvalCommand(CLI::App& parent) {
       ->capture_default_str();
   cmd->add_option("--max-steps", request->options.max_steps, "straight moves allowed a run")
       ->capture_default_str();
-  return {cmd, [request, planners] {
-            request->planners.clear();
-            for (const std::string& p : *planners) {
-              request->planners.push_back(*app::ParsePlannerKind(p));
-            }
-            const auto runs = app::EvaluateExploration(*request, [](const app::ExploreEvalRun& r) {
-              std::fprintf(stderr,
-                           "explore-eval: %s %s seed %llu: %s, coverage %.3f, path %.2f m, "
-                           "%d stops, %.1f s\n",
-                           r.world_name.c_str(),
-                           std::string(app::PlannerKindName(r.planner)).c_str(),
-                           static_cast<unsigned long long>(r.seed), r.status.c_str(),
-                           r.eval.coverage, r.path_length_m, r.stops, r.wall_time_s);
-            });
-            std::fputs(app::ExploreEvalTable(runs).c_str(), stdout);
-          }};
+  return {
+      cmd, [request, planners] {
+        request->planners.clear();
+        for (const std::string& p : *planners) {
+          request->planners.push_back(*run::ParsePlannerKind(p));
+        }
+        const auto runs = tools::EvaluateExploration(*request, [](const tools::ExploreEvalRun& r) {
+          std::fprintf(stderr,
+                       "explore-eval: %s %s seed %llu: %s, coverage %.3f, path %.2f m, "
+                       "%d stops, %.1f s\n",
+                       r.world_name.c_str(), std::string(run::PlannerKindName(r.planner)).c_str(),
+                       static_cast<unsigned long long>(r.seed), r.status.c_str(), r.eval.coverage,
+                       r.path_length_m, r.stops, r.wall_time_s);
+        });
+        std::fputs(tools::ExploreEvalTable(runs).c_str(), stdout);
+      }};
 }
 
 }  // namespace pirouette::cli

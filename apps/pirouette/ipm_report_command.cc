@@ -2,12 +2,12 @@
 #include <memory>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/ipm_report.h"
+#include "pirouette/tools/ipm_report.h"
 
 namespace pirouette::cli {
 
 Command AddIpmReportCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::IpmReportRequest>();
+  auto request = std::make_shared<tools::IpmReportRequest>();
   CLI::App* cmd = parent.add_subcommand(
       "ipm-report",
       "Print how far 1 pixel of floor-edge error moves the floor point, by range, for a camera, "
@@ -19,7 +19,7 @@ Command AddIpmReportCommand(CLI::App& parent) {
   cmd->add_option("--step", request->step_m, "the table's range step, metres")
       ->capture_default_str();
   cmd->add_flag("--json", request->json, "print JSON instead of a table");
-  return {cmd, [request] { std::fputs(app::IpmReport(*request).c_str(), stdout); }};
+  return {cmd, [request] { std::fputs(tools::IpmReport(*request).c_str(), stdout); }};
 }
 
 }  // namespace pirouette::cli

@@ -4,17 +4,17 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/parse.h"
-#include "pirouette/app/global_localization.h"
-#include "pirouette/app/locate_picture.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/draw/locate_picture.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/image_io.h"
+#include "pirouette/tools/locate.h"
 
 namespace pirouette::cli {
 
 Command AddLocateCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::LocateRequest>();
+  auto request = std::make_shared<tools::LocateRequest>();
   auto pose = std::make_shared<std::string>();
   auto method = std::make_shared<std::string>("default");
   auto out = std::make_shared<std::string>();
@@ -76,7 +76,7 @@ Command AddLocateCommand(CLI::App& parent) {
             }
             request->method = *parsed;
             if (pose_option->count() > 0) request->pose = ParsePose(*pose, "--pose");
-            const app::LocateResult result = app::RunLocate(*request);
+            const tools::LocateResult result = tools::RunLocate(*request);
             if (result.table_replaced) {
               std::fprintf(stderr,
                            "note: %s held a place table made for another map or settings; "
@@ -106,11 +106,12 @@ Command AddLocateCommand(CLI::App& parent) {
                   100.0 * result.wrong / n, result.wrong, result.mean_locate_s);
             }
             if (!out->empty()) {
-              io::WriteFileAtomically(*out, app::LocateJson(*request, result).dump(2) + "\n");
+              io::WriteFileAtomically(*out, tools::LocateJson(*request, result).dump(2) + "\n");
               std::fprintf(stderr, "wrote %s\n", out->c_str());
             }
             if (!picture->empty()) {
-              io::WritePng(*picture, app::DrawLocatePicture(result));
+              io::WritePng(*picture, draw::DrawLocatePicture(*result.map, result.trials,
+                                                             result.coarse_cell_m));
               std::fprintf(stderr, "wrote %s\n", picture->c_str());
             }
           }};

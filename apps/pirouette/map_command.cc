@@ -2,12 +2,12 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/log_mapping.h"
+#include "pirouette/run/log_replay.h"
 
 namespace pirouette::cli {
 
 Command AddMapCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::MapLogRequest>();
+  auto request = std::make_shared<run::MapLogRequest>();
   CLI::App* cmd = parent.add_subcommand(
       "map",
       "Build the map of a recorded run (a pirouette-log/1 folder, as `explore --record DIR` "
@@ -38,7 +38,7 @@ Command AddMapCommand(CLI::App& parent) {
       ->check(CLI::IsMember({"scan", "none"}));
   cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
   return {cmd, [request] {
-            const app::MapLogReport report = app::RunMapLog(*request);
+            const run::MapLogReport report = run::RunMapLog(*request);
             if (!request->quiet) {
               std::fprintf(stderr, "map: %d frames in %.1f s; map in %s/map.yaml\n",
                            report.result.frames, report.result.wall_time_s,

@@ -2,13 +2,13 @@
 #include <memory>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/perception_eval.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/eval/perception_eval.h"
 
 namespace pirouette::cli {
 
 Command AddPerceptionEvalCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::PerceptionEvalRequest>();
+  auto request = std::make_shared<eval::PerceptionEvalRequest>();
   auto method = std::make_shared<std::string>("default");
   auto max_range = std::make_shared<double>(0.0);
   CLI::App* cmd = parent.add_subcommand(
@@ -36,8 +36,8 @@ Command AddPerceptionEvalCommand(CLI::App& parent) {
             }
             request->method = *parsed;
             if (max_range_option->count() > 0) request->max_range_m = *max_range;
-            const auto worlds = app::EvaluatePerception(*request);
-            std::fputs(app::PerceptionEvalJson(*request, worlds).c_str(), stdout);
+            const auto worlds = eval::EvaluatePerception(*request);
+            std::fputs(eval::PerceptionEvalJson(*request, worlds).c_str(), stdout);
           }};
 }
 

@@ -4,14 +4,14 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/place_recognition.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/atomic_file.h"
+#include "pirouette/tools/places.h"
 
 namespace pirouette::cli {
 
 Command AddPlacesCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::PlacesRequest>();
+  auto request = std::make_shared<tools::PlacesRequest>();
   auto method = std::make_shared<std::string>("default");
   auto spacing = std::make_shared<double>(0.0);
   auto out = std::make_shared<std::string>();
@@ -59,7 +59,7 @@ Command AddPlacesCommand(CLI::App& parent) {
             }
             request->method = *parsed;
             if (spacing_option->count() > 0) request->spacing_m = *spacing;
-            const app::PlacesResult result = app::MeasurePlaces(*request);
+            const tools::PlacesResult result = tools::MeasurePlaces(*request);
             std::printf(
                 "places in %s: %d table places (spacing %.3f m%s), %d queries, coarse "
                 "cell %.3f m\n",
@@ -69,7 +69,7 @@ Command AddPlacesCommand(CLI::App& parent) {
                         "informative queries: place, heading");
             const double n = result.queries;
             const double k = std::max(1, result.informative_queries);
-            for (const app::SignatureScore& s : result.scores) {
+            for (const tools::SignatureScore& s : result.scores) {
               const std::string name(localize::SignatureKindName(s.kind));
               if (localize::SignatureGivesHeading(s.kind)) {
                 std::printf("%-9s %6.1f%% %8.1f%% %14.1f   %6.1f%% %6.1f%%\n", name.c_str(),
@@ -83,9 +83,9 @@ Command AddPlacesCommand(CLI::App& parent) {
               }
             }
             std::printf("informative queries (>= %d of 360 bearings hit something): %d of %d\n",
-                        app::kInformativeBins, result.informative_queries, result.queries);
+                        tools::kInformativeBins, result.informative_queries, result.queries);
             if (!out->empty()) {
-              io::WriteFileAtomically(*out, app::PlacesJson(*request, result).dump(2) + "\n");
+              io::WriteFileAtomically(*out, tools::PlacesJson(*request, result).dump(2) + "\n");
               std::fprintf(stderr, "wrote %s\n", out->c_str());
             }
           }};

@@ -3,12 +3,12 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/parse.h"
-#include "pirouette/app/render_view.h"
+#include "pirouette/tools/render_view.h"
 
 namespace pirouette::cli {
 
 Command AddRenderCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::RenderViewRequest>();
+  auto request = std::make_shared<tools::RenderViewRequest>();
   auto pose = std::make_shared<std::string>();
   CLI::App* cmd = parent.add_subcommand(
       "render",
@@ -23,7 +23,7 @@ Command AddRenderCommand(CLI::App& parent) {
   cmd->add_option("--seed", request->seed, "seeds the sensor noise")->capture_default_str();
   return {cmd, [request, pose] {
             request->world_T_robot = ParsePose(*pose, "--pose");
-            app::RenderView(*request);
+            tools::RenderView(*request);
             std::fprintf(stderr, "wrote %s\n", request->out_path.c_str());
           }};
 }

@@ -3,13 +3,13 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/parse.h"
-#include "pirouette/app/rop.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/tools/rop.h"
 
 namespace pirouette::cli {
 
 Command AddRopCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::RopRequest>();
+  auto request = std::make_shared<tools::RopRequest>();
   auto pose = std::make_shared<std::string>();
   auto method = std::make_shared<std::string>("default");
   auto max_range = std::make_shared<double>(0.0);
@@ -40,7 +40,7 @@ Command AddRopCommand(CLI::App& parent) {
             request->method = *parsed;
             request->world_T_robot = ParsePose(*pose, "--pose");
             if (max_range_option->count() > 0) request->max_range_m = *max_range;
-            app::MakeRop(*request);
+            tools::MakeRop(*request);
             std::fprintf(stderr, "wrote %s\n", request->out_path.c_str());
           }};
 }

@@ -2,13 +2,13 @@
 #include <memory>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/segment_image.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/tools/segment.h"
 
 namespace pirouette::cli {
 
 Command AddSegmentCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::SegmentImageRequest>();
+  auto request = std::make_shared<tools::SegmentImageRequest>();
   auto method = std::make_shared<std::string>("default");
   auto max_range = std::make_shared<double>(0.0);
   CLI::App* cmd = parent.add_subcommand(
@@ -34,9 +34,9 @@ Command AddSegmentCommand(CLI::App& parent) {
             }
             request->method = *parsed;
             if (max_range_option->count() > 0) request->max_range_m = *max_range;
-            const app::SegmentImageResult result = app::SegmentImage(*request);
+            const tools::SegmentImageResult result = tools::SegmentImage(*request);
             if (result.profile) {
-              std::fputs(app::ObstacleProfileJson(*result.profile).c_str(), stdout);
+              std::fputs(tools::ObstacleProfileJson(*result.profile).c_str(), stdout);
             }
             if (!request->mask_path.empty()) {
               std::fprintf(stderr, "wrote %s\n", request->mask_path.c_str());

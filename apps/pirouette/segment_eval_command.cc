@@ -2,15 +2,15 @@
 #include <memory>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/app/segmentation_eval.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/eval/segmentation_eval.h"
 
 namespace pirouette::cli {
 
 Command AddSegmentEvalCommand(CLI::App& parent) {
-  auto request = std::make_shared<app::SegmentationEvalRequest>();
+  auto request = std::make_shared<eval::SegmentationEvalRequest>();
   auto method = std::make_shared<std::string>("default");
-  auto sim_request = std::make_shared<app::SimulatedEvalRequest>();
+  auto sim_request = std::make_shared<eval::SimulatedEvalRequest>();
   CLI::App* cmd = parent.add_subcommand(
       "segment-eval",
       "Measure floor segmentation, as the mean and per-frame IoU of the floor mask (JSON on "
@@ -43,11 +43,11 @@ Command AddSegmentEvalCommand(CLI::App& parent) {
             const std::string name(vision::SegmentationMethodName(*parsed));
             if (world->count() > 0) {
               sim_request->method = *parsed;
-              const app::SegmentationEvalResult result =
-                  app::EvaluateSimulatedSegmentation(*sim_request);
+              const eval::SegmentationEvalResult result =
+                  eval::EvaluateSimulatedSegmentation(*sim_request);
               request->first = 0;
               request->last = static_cast<int>(result.images.size()) - 1;
-              std::fputs(app::SegmentationEvalJson(*request, result).c_str(), stdout);
+              std::fputs(eval::SegmentationEvalJson(*request, result).c_str(), stdout);
               std::fprintf(stderr,
                            "%s, %s, %zu frames: mean IoU %.4f, boundary row error median %.0f "
                            "px, p95 %.0f px\n",
@@ -59,8 +59,8 @@ Command AddSegmentEvalCommand(CLI::App& parent) {
             if (images->count() == 0) {
               throw core::InputError("", 0, "--images", "give --images DIR or --world FILE");
             }
-            const app::SegmentationEvalResult result = app::EvaluateSegmentation(*request);
-            std::fputs(app::SegmentationEvalJson(*request, result).c_str(), stdout);
+            const eval::SegmentationEvalResult result = eval::EvaluateSegmentation(*request);
+            std::fputs(eval::SegmentationEvalJson(*request, result).c_str(), stdout);
             std::fprintf(stderr, "%s, photos %d-%d: mean IoU %.4f\n", name.c_str(), request->first,
                          request->last, result.mean_iou);
           }};

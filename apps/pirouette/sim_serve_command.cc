@@ -36,9 +36,9 @@ void Serve(const SimServeRequest& request) {
   const auto pair = [](const std::vector<double>& v) {
     return v.size() == 2 ? std::optional<std::array<double, 2>>({v[0], v[1]}) : std::nullopt;
   };
-  const core::OdometryNoise noise = sim::OdometryNoiseWith(
+  const core::OdometryNoise noise = core::OdometryNoiseWith(
       world.robot().odometry_noise, pair(request.odometry_noise), pair(request.odometry_bias));
-  sim::CheckOdometryNoise(noise);
+  core::CheckOdometryNoise(noise);
   sim::SimulatedRobot simulated(world, request.seed, noise);
   robot::Robot& robot = simulated.robot();
 

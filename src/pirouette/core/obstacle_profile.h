@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 namespace pirouette::core {
@@ -26,5 +27,34 @@ struct ObstacleProfile {
   std::vector<RangeReading> readings;
   double max_range_m = 0.0;
 };
+
+// How a profile's readings read: counts of each kind and the nearest hit.
+struct ProfileCounts {
+  int hit = 0;
+  int clear = 0;
+  int blind = 0;
+  std::optional<double> nearest_hit_m;  // nullopt: no hit
+};
+
+inline ProfileCounts CountReadings(const ObstacleProfile& profile) {
+  ProfileCounts counts;
+  for (const RangeReading& r : profile.readings) {
+    switch (r.kind) {
+      case ReadingKind::kHit:
+        ++counts.hit;
+        if (!counts.nearest_hit_m || r.range_m < *counts.nearest_hit_m) {
+          counts.nearest_hit_m = r.range_m;
+        }
+        break;
+      case ReadingKind::kClear:
+        ++counts.clear;
+        break;
+      case ReadingKind::kBlind:
+        ++counts.blind;
+        break;
+    }
+  }
+  return counts;
+}
 
 }  // namespace pirouette::core

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <array>
+#include <optional>
+
 namespace pirouette::core {
 
 // A robot's motion error, as fractions of each move (the simulator's, or a
@@ -13,5 +16,16 @@ struct OdometryNoise {
   double translation_bias = 0.0;  // in [-0.5, 0.5]
   double rotation_bias = 0.0;     // in [-0.5, 0.5]
 };
+
+// The command line's motion error: `base` (a world file's) with the standard
+// deviations {translation, rotation} and the biases {translation, rotation}
+// given, each where given.
+OdometryNoise OdometryNoiseWith(const OdometryNoise& base,
+                                const std::optional<std::array<double, 2>>& deviations,
+                                const std::optional<std::array<double, 2>>& biases);
+
+// Throws core::InputError naming --odometry-noise (deviations outside
+// [0, 1]) or --odometry-bias (biases outside [-0.5, 0.5]).
+void CheckOdometryNoise(const OdometryNoise& noise);
 
 }  // namespace pirouette::core

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <charconv>
 #include <cstddef>
 #include <cstdio>
@@ -49,26 +50,20 @@ NumberList ReadMatrix(const std::string& file, const YamlField& field, int rows,
   return ReadNumbers(file, data_field, count);
 }
 
-camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
-                                const std::string& prefix) {
-  const YamlField root{node, prefix, LineOf(node)};
-  const YamlMap map = ReadMap(file, root,
-                              {"image_width", "image_height", "camera_name", "camera_matrix",
-                               "distortion_model", "distortion_coefficients",
-                               "rectification_matrix", "projection_matrix", "mount", "vignetting"});
-
-  int size[2] = {0, 0};
+// image_width and image_height, each > 0.
+std::array<int, 2> ReadImageSize(const std::string& file, const YamlMap& map) {
+  std::array<int, 2> size = {0, 0};
   const char* size_keys[2] = {"image_width", "image_height"};
-  for (int i = 0; i < 2; ++i) {
+  for (std::size_t i = 0; i < 2; ++i) {
     const YamlField field = map.Required(size_keys[i]);
     size[i] = ReadWholeNumber(file, field);
     if (size[i] <= 0) ThrowInputError(file, field, fmt::format("must be > 0, got {}", size[i]));
   }
+  return size;
+}
 
-  std::string name;
-  if (const auto field = map.Optional("camera_name")) name = ReadName(file, *field);
-
-  // camera_matrix: [fx 0 cx; 0 fy cy; 0 0 1], row-major.
+// camera_matrix: [fx 0 cx; 0 fy cy; 0 0 1], row-major.
+camera::Intrinsics ReadIntrinsics(const std::string& file, const YamlMap& map) {
   const YamlField k_field = map.Required("camera_matrix");
   const NumberList k_data = ReadMatrix(file, k_field, 3, 3);
   const std::vector<double>& k = k_data.values;
@@ -86,8 +81,11 @@ camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
   check_k(6, k[6] == 0.0, "must be 0 (the matrix's last row is [0 0 1])");
   check_k(7, k[7] == 0.0, "must be 0 (the matrix's last row is [0 0 1])");
   check_k(8, k[8] == 1.0, "must be 1 (the matrix's last row is [0 0 1])");
-  const camera::Intrinsics intrinsics{k[0], k[4], k[2], k[5]};
+  return {k[0], k[4], k[2], k[5]};
+}
 
+// distortion_model (plumb_bob) and its 5 distortion_coefficients.
+camera::PlumbBob ReadDistortion(const std::string& file, const YamlMap& map) {
   const YamlField model_field = map.Required("distortion_model");
   const std::string model = ReadName(file, model_field);
   if (model != kSupportedDistortion) {
@@ -104,8 +102,11 @@ camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
         fmt::format("plumb_bob takes 5 coefficients (k1, k2, p1, p2, k3), got {}", d_count));
   }
   const std::vector<double> d = ReadMatrix(file, d_field, 1, 5).values;
-  const camera::PlumbBob distortion{d[0], d[1], d[2], d[3], d[4]};
+  return {d[0], d[1], d[2], d[3], d[4]};
+}
 
+// mount: height (> 0), tilt (degrees in (-90, 90)), forward (optional).
+camera::Mount ReadMount(const std::string& file, const YamlMap& map) {
   const YamlMap mount_map = ReadMap(file, map.Required("mount"), {"height", "tilt", "forward"});
   camera::Mount mount;
   const YamlField height_field = mount_map.Required("height");
@@ -122,7 +123,11 @@ camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
   }
   mount.tilt_rad = core::DegToRad(tilt_deg);
   if (const auto field = mount_map.Optional("forward")) mount.forward_m = ReadNumber(file, *field);
+  return mount;
+}
 
+// vignetting (optional): k, three gains >= 0.
+camera::Vignetting ReadVignetting(const std::string& file, const YamlMap& map) {
   camera::Vignetting vignetting;
   if (const auto field = map.Optional("vignetting")) {
     const YamlField k_gain = ReadMap(file, *field, {"k"}).Required("k");
@@ -135,7 +140,23 @@ camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
       vignetting.k[i] = values.values[i];
     }
   }
+  return vignetting;
+}
 
+camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
+                                const std::string& prefix) {
+  const YamlField root{node, prefix, LineOf(node)};
+  const YamlMap map = ReadMap(file, root,
+                              {"image_width", "image_height", "camera_name", "camera_matrix",
+                               "distortion_model", "distortion_coefficients",
+                               "rectification_matrix", "projection_matrix", "mount", "vignetting"});
+  const std::array<int, 2> size = ReadImageSize(file, map);
+  std::string name;
+  if (const auto field = map.Optional("camera_name")) name = ReadName(file, *field);
+  const camera::Intrinsics intrinsics = ReadIntrinsics(file, map);
+  const camera::PlumbBob distortion = ReadDistortion(file, map);
+  const camera::Mount mount = ReadMount(file, map);
+  const camera::Vignetting vignetting = ReadVignetting(file, map);
   // rectification_matrix and projection_matrix are accepted and ignored (SPEC.md).
   return {name, size[0], size[1], intrinsics, distortion, mount, vignetting};
 }

@@ -393,6 +393,82 @@ std::string_view ShapeName(sim::Solid::Kind kind) {
   return "wall";
 }
 
+// The world's obstacles and chessboards, with where each obstacle stands in
+// the file (its index in the list and its line), for messages.
+struct Obstacles {
+  std::vector<sim::Solid> solids;
+  std::vector<std::size_t> items;
+  std::vector<int> lines;
+  std::vector<sim::Chessboard> chessboards;
+};
+
+Obstacles ReadObstacles(const std::string& file, const YamlMap& map) {
+  Obstacles out;
+  if (const auto field = map.Optional("obstacles")) {
+    const std::vector<YamlField> items = ReadList(file, *field, "a list of obstacles");
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (IsChessboardItem(items[i])) {
+        out.chessboards.push_back(ReadChessboard(file, Index(items[i], i)));
+        continue;
+      }
+      out.solids.push_back(ReadObstacle(file, Index(items[i], i)));
+      out.items.push_back(i);
+      out.lines.push_back(items[i].line);
+    }
+  }
+  return out;
+}
+
+// robot: start [x, y, heading°], radius, camera, odometry_noise (optional);
+// with the start's field, for messages.
+struct RobotField {
+  sim::RobotSpec spec;
+  YamlField start_field;
+};
+
+RobotField ReadRobot(const std::string& file, const YamlField& field) {
+  const YamlMap robot = ReadMap(file, field, {"start", "radius", "camera", "odometry_noise"});
+  const YamlField start_field = robot.Required("start");
+  const NumberList start = ReadNumbers(file, start_field, 3);
+  const core::Pose2 world_T_start(start.values[0], start.values[1],
+                                  core::DegToRad(start.values[2]));
+  const double radius = ReadPositive(file, robot.Required("radius"));
+  camera::CameraModel camera = ReadCamera(file, robot.Required("camera"));
+  core::OdometryNoise noise;
+  if (const auto noise_field = robot.Optional("odometry_noise")) {
+    noise = ReadOdometryNoise(file, *noise_field);
+  }
+  return {{world_T_start, radius, std::move(camera), noise}, start_field};
+}
+
+// Throws naming the start unless the robot's disc there lies on the floor and
+// touches no obstacle, saying which it leaves or overlaps.
+void CheckStartFits(const std::string& file, const sim::World& world, const Obstacles& obstacles,
+                    const YamlField& start_field) {
+  const Eigen::Vector2d& centre = world.robot().start.translation();
+  const double radius = world.robot().radius;
+  if (world.DiscFits(centre, radius)) return;
+  const std::string disc =
+      fmt::format("the robot's disc (radius {}) at ({}, {})", radius, centre.x(), centre.y());
+  const Eigen::Vector2d& size = world.floor().size;
+  const double to_edge =
+      std::min({centre.x(), centre.y(), size.x() - centre.x(), size.y() - centre.y()});
+  if (!(to_edge > radius)) {
+    ThrowInputError(
+        file, start_field,
+        fmt::format("{} does not lie on the floor [0, {}] × [0, {}]", disc, size.x(), size.y()));
+  }
+  for (std::size_t i = 0; i < obstacles.solids.size(); ++i) {
+    if (!(obstacles.solids[i].SignedDistance(centre) > radius)) {
+      ThrowInputError(
+          file, start_field,
+          fmt::format("{} overlaps obstacles[{}] (the {} on line {})", disc, obstacles.items[i],
+                      ShapeName(obstacles.solids[i].kind), obstacles.lines[i]));
+    }
+  }
+  ThrowInputError(file, start_field, disc + " touches something occupied");
+}
+
 sim::World ParseWorld(const YAML::Node& node, const std::string& file) {
   const YamlField root{node, "", LineOf(node)};
   const YamlMap map(file, root);
@@ -407,74 +483,22 @@ sim::World ParseWorld(const YAML::Node& node, const std::string& file) {
   const YamlField name_field = map.Required("name");
   std::string name = ReadString(file, name_field);
   if (name.empty()) ThrowInputError(file, name_field, "must not be empty");
-
   const sim::Floor floor = ReadFloor(file, map.Required("floor"));
-
   std::optional<sim::BoundaryWalls> walls;
   if (const auto field = map.Optional("walls")) walls = ReadWalls(file, *field);
-
-  std::vector<sim::Solid> obstacles;
-  std::vector<std::size_t> obstacle_items;  // each obstacle's index in the file's list
-  std::vector<int> obstacle_lines;
-  std::vector<sim::Chessboard> chessboards;
-  if (const auto field = map.Optional("obstacles")) {
-    const std::vector<YamlField> items = ReadList(file, *field, "a list of obstacles");
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      if (IsChessboardItem(items[i])) {
-        chessboards.push_back(ReadChessboard(file, Index(items[i], i)));
-        continue;
-      }
-      obstacles.push_back(ReadObstacle(file, Index(items[i], i)));
-      obstacle_items.push_back(i);
-      obstacle_lines.push_back(items[i].line);
-    }
-  }
-
+  Obstacles obstacles = ReadObstacles(file, map);
   sim::Light light;
   if (const auto field = map.Optional("light")) light = ReadLight(file, *field);
-
-  const YamlMap robot =
-      ReadMap(file, map.Required("robot"), {"start", "radius", "camera", "odometry_noise"});
-  const YamlField start_field = robot.Required("start");
-  const NumberList start = ReadNumbers(file, start_field, 3);
-  const core::Pose2 world_T_start(start.values[0], start.values[1],
-                                  core::DegToRad(start.values[2]));
-  const double radius = ReadPositive(file, robot.Required("radius"));
-  camera::CameraModel camera = ReadCamera(file, robot.Required("camera"));
-  core::OdometryNoise noise;
-  if (const auto field = robot.Optional("odometry_noise")) noise = ReadOdometryNoise(file, *field);
+  RobotField robot = ReadRobot(file, map.Required("robot"));
 
   std::optional<sim::World> world;
   try {
-    world.emplace(std::move(name), floor, walls, obstacles, light,
-                  sim::RobotSpec{world_T_start, radius, std::move(camera), noise},
-                  std::move(chessboards));
+    world.emplace(std::move(name), floor, walls, obstacles.solids, light, std::move(robot.spec),
+                  std::move(obstacles.chessboards));
   } catch (const std::invalid_argument& e) {
     ThrowInputError(file, 0, "", e.what());
   }
-
-  // The robot's disc at the start must lie on the floor and touch no obstacle.
-  const Eigen::Vector2d& centre = world_T_start.translation();
-  if (!world->DiscFits(centre, radius)) {
-    const std::string disc =
-        fmt::format("the robot's disc (radius {}) at ({}, {})", radius, centre.x(), centre.y());
-    const double to_edge = std::min(
-        {centre.x(), centre.y(), floor.size.x() - centre.x(), floor.size.y() - centre.y()});
-    if (!(to_edge > radius)) {
-      ThrowInputError(file, start_field,
-                      fmt::format("{} does not lie on the floor [0, {}] × [0, {}]", disc,
-                                  floor.size.x(), floor.size.y()));
-    }
-    for (std::size_t i = 0; i < obstacles.size(); ++i) {
-      if (!(obstacles[i].SignedDistance(centre) > radius)) {
-        ThrowInputError(
-            file, start_field,
-            fmt::format("{} overlaps obstacles[{}] (the {} on line {})", disc, obstacle_items[i],
-                        ShapeName(obstacles[i].kind), obstacle_lines[i]));
-      }
-    }
-    ThrowInputError(file, start_field, disc + " touches something occupied");
-  }
+  CheckStartFits(file, *world, obstacles, robot.start_field);
   return std::move(*world);
 }
 

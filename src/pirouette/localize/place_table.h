@@ -73,6 +73,14 @@ class PlaceTable {
                                   const PoseSearch& search = {}) const;
 
  private:
+  // Every place's signature distance from the query, in the table's order.
+  std::vector<PlaceMatch> SignatureDistances(const PlaceView& query, SignatureKind kind) const;
+  // Each match's distance and heading from aligning its view with the query's
+  // (with colours or not), and with `search` its position refined too.
+  void Align(const PlaceView& query, bool colour, std::vector<PlaceMatch>& matches) const;
+  void AlignPoses(const PlaceView& query, bool colour, const PoseSearch& search,
+                  std::vector<PlaceMatch>& matches) const;
+
   std::string world_;
   double max_range_m_ = 0.0;
   std::vector<PlaceEntry> entries_;

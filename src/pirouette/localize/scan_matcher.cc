@@ -49,12 +49,11 @@ std::vector<Eigen::Vector2d> HitStore::Within(const Eigen::Vector2d& lo,
   return out;
 }
 
-ScanMatch MatchScan(const HitStore& reference, const Eigen::Vector2d& origin,
-                    const std::vector<Eigen::Vector2d>& hit_offsets,
-                    const Eigen::Matrix3d& prior_covariance, const ScanMatchOptions& options) {
+namespace {
+
+void CheckMatchInputs(const HitStore& reference, const Eigen::Matrix3d& prior_covariance,
+                      const ScanMatchOptions& options) {
   options.Check();
-  ScanMatch result;
-  result.covariance = prior_covariance;
   if (!prior_covariance.allFinite() || prior_covariance(0, 0) <= 0.0 ||
       prior_covariance(1, 1) <= 0.0 || prior_covariance(2, 2) <= 0.0 ||
       prior_covariance.llt().info() != Eigen::Success) {
@@ -65,37 +64,60 @@ ScanMatch MatchScan(const HitStore& reference, const Eigen::Vector2d& origin,
   if (reference.cell_m() != options.cell_m) {
     throw std::invalid_argument("MatchScan: the reference's cells must be options.cell_m");
   }
-  if (hit_offsets.empty() || reference.size() == 0) return result;
+}
 
-  const double cell = options.cell_m;
-  const double sigma = options.sigma_m;
+// The search's half-widths: cells in x and y, heading steps.
+struct SearchWindow {
+  int nx = 0;
+  int ny = 0;
+  int nt = 0;
+};
+
+SearchWindow WindowOf(const Eigen::Matrix3d& prior_covariance, const ScanMatchOptions& options) {
   const auto window = [&](double variance) {
     return std::clamp(options.window_sigmas * std::sqrt(variance), options.min_window_m,
                       options.max_window_m);
   };
-  const int nx = static_cast<int>(std::round(window(prior_covariance(0, 0)) / cell));
-  const int ny = static_cast<int>(std::round(window(prior_covariance(1, 1)) / cell));
+  SearchWindow w;
+  w.nx = static_cast<int>(std::round(window(prior_covariance(0, 0)) / options.cell_m));
+  w.ny = static_cast<int>(std::round(window(prior_covariance(1, 1)) / options.cell_m));
   // Never past a half turn either way.
-  const int nt = static_cast<int>(std::min(
+  w.nt = static_cast<int>(std::min(
       std::ceil(options.window_sigmas * std::sqrt(prior_covariance(2, 2)) / options.step_rad),
       std::floor(std::numbers::pi / options.step_rad)));
+  return w;
+}
 
-  // The agreement of a point with the reference, on a local grid around the
-  // scan, wide enough for every hit at every correction.
+// The agreement of a point with the reference (log(floor + exp(-d²/2σ²)) to
+// the nearest reference hit within 3σ), on a square local grid of `size`
+// cells from `lo`, on the reference's cells so that a hit at a reference hit
+// falls in its cell and the field is not biased by a fraction of a cell.
+struct LikelihoodField {
+  Eigen::Vector2d lo;
+  std::ptrdiff_t size = 0;
+  std::vector<float> values;  // row-major
+  bool empty = true;          // no reference hit in reach
+};
+
+LikelihoodField FieldAround(const HitStore& reference, const Eigen::Vector2d& origin,
+                            const std::vector<Eigen::Vector2d>& hit_offsets,
+                            const SearchWindow& window, const ScanMatchOptions& options) {
+  const double cell = options.cell_m;
+  const double sigma = options.sigma_m;
   double reach = 0.0;
   for (const Eigen::Vector2d& q : hit_offsets) reach = std::max(reach, q.norm());
   const int kernel = static_cast<int>(std::ceil(3.0 * sigma / cell));
-  const double margin = reach + std::max(nx, ny) * cell + (kernel + 2) * cell;
-  // On the reference's cells, so that a hit at a reference hit falls in its
-  // cell and the field is not biased by a fraction of a cell.
-  const Eigen::Vector2d lo =
-      ((origin - Eigen::Vector2d(margin, margin)) / cell).array().floor().matrix() * cell;
-  const auto size = static_cast<std::ptrdiff_t>(std::ceil(2.0 * margin / cell)) + 1;
-  const auto log_floor = static_cast<float>(std::log(options.floor));
-  std::vector<float> field(static_cast<std::size_t>(size * size), log_floor);
+  const double margin = reach + std::max(window.nx, window.ny) * cell + (kernel + 2) * cell;
+  LikelihoodField field;
+  field.lo = ((origin - Eigen::Vector2d(margin, margin)) / cell).array().floor().matrix() * cell;
+  field.size = static_cast<std::ptrdiff_t>(std::ceil(2.0 * margin / cell)) + 1;
+  const std::ptrdiff_t size = field.size;
+  const Eigen::Vector2d& lo = field.lo;
+  field.values.assign(static_cast<std::size_t>(size * size),
+                      static_cast<float>(std::log(options.floor)));
   const std::vector<Eigen::Vector2d> near =
       reference.Within(lo, lo + Eigen::Vector2d(size * cell, size * cell));
-  if (near.empty()) return result;
+  field.empty = near.empty();
   for (const Eigen::Vector2d& p : near) {
     const auto cx = static_cast<std::ptrdiff_t>(std::floor((p.x() - lo.x()) / cell));
     const auto cy = static_cast<std::ptrdiff_t>(std::floor((p.y() - lo.y()) / cell));
@@ -109,55 +131,73 @@ ScanMatch MatchScan(const HitStore& reference, const Eigen::Vector2d& origin,
         const double d2 = (centre - p).squaredNorm();
         const auto v =
             static_cast<float>(std::log(options.floor + std::exp(-d2 / (2.0 * sigma * sigma))));
-        float& f = field[static_cast<std::size_t>(y * size + x)];
+        float& f = field.values[static_cast<std::size_t>(y * size + x)];
         f = std::max(f, v);
       }
     }
   }
+  return field;
+}
 
-  // The hits' cells in the field, turned by theta about the origin.
-  std::vector<std::ptrdiff_t> cells(hit_offsets.size());
-  const auto place = [&](double theta) {
-    const double c = std::cos(theta);
-    const double s = std::sin(theta);
-    for (std::size_t i = 0; i < hit_offsets.size(); ++i) {
-      const Eigen::Vector2d& q = hit_offsets[i];
-      const Eigen::Vector2d p =
-          origin + Eigen::Vector2d(c * q.x() - s * q.y(), s * q.x() + c * q.y());
-      const auto x = static_cast<std::ptrdiff_t>(std::floor((p.x() - lo.x()) / cell));
-      const auto y = static_cast<std::ptrdiff_t>(std::floor((p.y() - lo.y()) / cell));
-      cells[i] = y * size + x;
-    }
-  };
-  // The overlap at the prior's mean: hits within 2σ of a reference hit (and
-  // half a cell, so that a cell right at 2σ counts whatever the rounding).
-  place(0.0);
-  const double half_cell_past = 2.0 * sigma + 0.5 * cell;
+// The hits' cells in the field, turned by theta about the origin.
+void PlaceHits(const LikelihoodField& field, const Eigen::Vector2d& origin,
+               const std::vector<Eigen::Vector2d>& hit_offsets, double cell, double theta,
+               std::vector<std::ptrdiff_t>& cells) {
+  const double c = std::cos(theta);
+  const double s = std::sin(theta);
+  for (std::size_t i = 0; i < hit_offsets.size(); ++i) {
+    const Eigen::Vector2d& q = hit_offsets[i];
+    const Eigen::Vector2d p =
+        origin + Eigen::Vector2d(c * q.x() - s * q.y(), s * q.x() + c * q.y());
+    const auto x = static_cast<std::ptrdiff_t>(std::floor((p.x() - field.lo.x()) / cell));
+    const auto y = static_cast<std::ptrdiff_t>(std::floor((p.y() - field.lo.y()) / cell));
+    cells[i] = y * field.size + x;
+  }
+}
+
+// The hits (at `cells`) within 2σ of a reference hit, and half a cell, so that
+// a cell right at 2σ counts whatever the rounding.
+int Overlap(const LikelihoodField& field, const std::vector<std::ptrdiff_t>& cells,
+            const ScanMatchOptions& options) {
+  const double sigma = options.sigma_m;
+  const double half_cell_past = 2.0 * sigma + 0.5 * options.cell_m;
   const auto agree = static_cast<float>(
       std::log(options.floor + std::exp(-half_cell_past * half_cell_past / (2.0 * sigma * sigma))));
+  int overlap = 0;
   for (const std::ptrdiff_t index : cells) {
-    if (field[static_cast<std::size_t>(index)] >= agree) ++result.overlap;
+    if (field.values[static_cast<std::size_t>(index)] >= agree) ++overlap;
   }
-  if (result.overlap < options.min_overlap) return result;
+  return overlap;
+}
 
-  // Each correction's log posterior.
+struct Candidate {
+  Eigen::Vector3d offset;
+  double log_posterior;
+};
+
+// Every correction of the window with its log posterior: the hits' summed
+// agreement over options.correlation, less the prior's Mahalanobis term.
+std::vector<Candidate> ScoreCandidates(const LikelihoodField& field, const Eigen::Vector2d& origin,
+                                       const std::vector<Eigen::Vector2d>& hit_offsets,
+                                       const SearchWindow& w,
+                                       const Eigen::Matrix3d& prior_covariance,
+                                       const ScanMatchOptions& options) {
+  const double cell = options.cell_m;
   const Eigen::Matrix3d information = prior_covariance.inverse();
-  struct Candidate {
-    Eigen::Vector3d offset;
-    double log_posterior;
-  };
+  std::vector<std::ptrdiff_t> cells(hit_offsets.size());
   std::vector<Candidate> candidates;
-  candidates.reserve(static_cast<std::size_t>(2 * nx + 1) * static_cast<std::size_t>(2 * ny + 1) *
-                     static_cast<std::size_t>(2 * nt + 1));
-  for (int k = -nt; k <= nt; ++k) {
+  candidates.reserve(static_cast<std::size_t>(2 * w.nx + 1) *
+                     static_cast<std::size_t>(2 * w.ny + 1) *
+                     static_cast<std::size_t>(2 * w.nt + 1));
+  for (int k = -w.nt; k <= w.nt; ++k) {
     const double theta = k * options.step_rad;
-    place(theta);
-    for (int iy = -ny; iy <= ny; ++iy) {
-      for (int ix = -nx; ix <= nx; ++ix) {
-        const std::ptrdiff_t shift = iy * size + ix;
+    PlaceHits(field, origin, hit_offsets, cell, theta, cells);
+    for (int iy = -w.ny; iy <= w.ny; ++iy) {
+      for (int ix = -w.nx; ix <= w.nx; ++ix) {
+        const std::ptrdiff_t shift = iy * field.size + ix;
         double sum = 0.0;
         for (const std::ptrdiff_t index : cells) {
-          sum += field[static_cast<std::size_t>(index + shift)];
+          sum += field.values[static_cast<std::size_t>(index + shift)];
         }
         const Eigen::Vector3d offset(ix * cell, iy * cell, theta);
         candidates.push_back(
@@ -165,7 +205,12 @@ ScanMatch MatchScan(const HitStore& reference, const Eigen::Vector2d& origin,
       }
     }
   }
+  return candidates;
+}
 
+// The posterior's mean and covariance over the candidates (Olson 2009, as
+// Karto computes the match's covariance from its response surface).
+void PosteriorMoments(const std::vector<Candidate>& candidates, ScanMatch& result) {
   double best = -std::numeric_limits<double>::infinity();
   for (const Candidate& c : candidates) best = std::max(best, c.log_posterior);
   double total = 0.0;
@@ -184,6 +229,26 @@ ScanMatch MatchScan(const HitStore& reference, const Eigen::Vector2d& origin,
   }
   result.offset = mean;
   result.covariance = covariance / total;
+}
+
+}  // namespace
+
+ScanMatch MatchScan(const HitStore& reference, const Eigen::Vector2d& origin,
+                    const std::vector<Eigen::Vector2d>& hit_offsets,
+                    const Eigen::Matrix3d& prior_covariance, const ScanMatchOptions& options) {
+  CheckMatchInputs(reference, prior_covariance, options);
+  ScanMatch result;
+  result.covariance = prior_covariance;
+  if (hit_offsets.empty() || reference.size() == 0) return result;
+  const SearchWindow window = WindowOf(prior_covariance, options);
+  const LikelihoodField field = FieldAround(reference, origin, hit_offsets, window, options);
+  if (field.empty) return result;
+  std::vector<std::ptrdiff_t> cells(hit_offsets.size());
+  PlaceHits(field, origin, hit_offsets, options.cell_m, 0.0, cells);
+  result.overlap = Overlap(field, cells, options);
+  if (result.overlap < options.min_overlap) return result;
+  PosteriorMoments(ScoreCandidates(field, origin, hit_offsets, window, prior_covariance, options),
+                   result);
   result.accepted = true;
   return result;
 }

@@ -51,6 +51,10 @@ inline constexpr double kFreeThreshold = 0.196;
 inline constexpr double kSmallRobotCellM = 0.01;
 inline constexpr double kLargeRobotCellM = 0.02;
 inline constexpr double kSmallRobotRadiusM = 0.1;
+// The cells a map may have: finer than 2 mm no camera here resolves, coarser
+// than half a metre no robot here fits through a door on.
+inline constexpr double kMinCellM = 0.002;
+inline constexpr double kMaxCellM = 0.5;
 inline double DefaultCellSize(double robot_radius_m) {
   return robot_radius_m < kSmallRobotRadiusM ? kSmallRobotCellM : kLargeRobotCellM;
 }

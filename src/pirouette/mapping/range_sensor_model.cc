@@ -145,53 +145,68 @@ void CheckReading(const core::RangeReading& reading) {
 
 }  // namespace
 
-std::size_t InsertProfile(OccupancyGrid& grid, const core::ObstacleProfile& profile,
-                          const core::Pose2& world_T_robot) {
-  const std::vector<core::RangeReading>& readings = profile.readings;
-  for (const auto& reading : readings) CheckReading(reading);
-  const Eigen::Vector2d& origin = world_T_robot.translation();
-  const double heading = world_T_robot.heading();
-  const double resolution = grid.geometry().resolution();
-  // Directions by rotating the previous one when the bearing moved a little
-  // (the columns of one image), by the Taylor series of sin and cos of the
-  // step (to x^5 and x^6: within an ulp for steps below 0.01 rad); afresh at
-  // least every 64 readings.
-  double last_bearing = 0.0;
-  Eigen::Vector2d last_direction(std::numeric_limits<double>::quiet_NaN(), 0.0);
-  int rotations = 0;
-  const auto direction_of = [&](double bearing) -> Eigen::Vector2d {
-    const double step = bearing - last_bearing;
-    if (std::abs(step) < 0.01 && rotations < 64 && !std::isnan(last_direction.x())) {
+namespace {
+
+// Directions along a frame's bearings, each by rotating the previous one when
+// the bearing moved less than kMaxRotationStepRad (the columns of one image),
+// by the Taylor series of sin and cos of the step (to x^5 and x^6: within an
+// ulp for such steps), and afresh at least every kMaxRotations readings, so
+// that rounding never builds up.
+class DirectionStepper {
+ public:
+  static constexpr double kMaxRotationStepRad = 0.01;
+  static constexpr int kMaxRotations = 64;
+
+  explicit DirectionStepper(double heading) : heading_(heading) {}
+
+  Eigen::Vector2d Next(double bearing) {
+    const double step = bearing - last_bearing_;
+    if (std::abs(step) < kMaxRotationStepRad && rotations_ < kMaxRotations &&
+        !std::isnan(last_.x())) {
       const double s2 = step * step;
       const double c = 1.0 - s2 * (0.5 - s2 * (1.0 / 24.0 - s2 / 720.0));
       const double s = step * (1.0 - s2 * (1.0 / 6.0 - s2 / 120.0));
-      last_direction = {c * last_direction.x() - s * last_direction.y(),
-                        s * last_direction.x() + c * last_direction.y()};
-      ++rotations;
+      last_ = {c * last_.x() - s * last_.y(), s * last_.x() + c * last_.y()};
+      ++rotations_;
     } else {
-      last_direction = {std::cos(heading + bearing), std::sin(heading + bearing)};
-      rotations = 0;
+      last_ = {std::cos(heading_ + bearing), std::sin(heading_ + bearing)};
+      rotations_ = 0;
     }
-    last_bearing = bearing;
-    return last_direction;
-  };
+    last_bearing_ = bearing;
+    return last_;
+  }
+
+ private:
+  double heading_;
+  double last_bearing_ = 0.0;
+  Eigen::Vector2d last_{std::numeric_limits<double>::quiet_NaN(), 0.0};
+  int rotations_ = 0;
+};
+
+// A frame's rays by pass, in world metres: blind areas, then misses (hit and
+// clear readings and the fill between them); the hits' ends are the hit pass.
+struct FrameRays {
+  std::vector<Ray> blind;
+  std::vector<Ray> miss;
+};
+
+FrameRays RaysOf(const std::vector<core::RangeReading>& readings, const core::Pose2& world_T_robot,
+                 double resolution) {
+  const Eigen::Vector2d& origin = world_T_robot.translation();
+  DirectionStepper directions(world_T_robot.heading());
   const auto ray = [&](double bearing, double range, bool end_hit, bool include_end) {
-    const Eigen::Vector2d direction = direction_of(bearing);
+    const Eigen::Vector2d direction = directions.Next(bearing);
     return Ray{direction, origin + range * direction, range, end_hit, include_end};
   };
-
-  // The rays by pass: blind areas, then misses (hit and clear readings and
-  // the fill between them); the hits' ends are the hit pass.
-  std::vector<Ray> blind_rays;
-  std::vector<Ray> miss_rays;
-  miss_rays.reserve(readings.size());
+  FrameRays rays;
+  rays.miss.reserve(readings.size());
   for (std::size_t i = 0; i < readings.size(); ++i) {
     const auto& r = readings[i];
     if (r.kind == ReadingKind::kBlind) {
-      blind_rays.push_back(ray(r.bearing_rad, r.range_m, false, true));
+      rays.blind.push_back(ray(r.bearing_rad, r.range_m, false, true));
       continue;
     }
-    miss_rays.push_back(
+    rays.miss.push_back(
         ray(r.bearing_rad, r.range_m, r.kind == ReadingKind::kHit, r.kind == ReadingKind::kClear));
     if (i + 1 == readings.size()) break;
     // Fill the gap to the next reading when their rays part by more than a cell.
@@ -205,49 +220,69 @@ std::size_t InsertProfile(OccupancyGrid& grid, const core::ObstacleProfile& prof
     // The end cell is seen through only where both readings saw past it.
     const bool end_free = r.kind == ReadingKind::kClear && next.kind == ReadingKind::kClear;
     for (int k = 1; k <= fills; ++k) {
-      miss_rays.push_back(ray(r.bearing_rad + gap * k / (fills + 1), range, false, end_free));
+      rays.miss.push_back(ray(r.bearing_rad + gap * k / (fills + 1), range, false, end_free));
     }
   }
+  return rays;
+}
 
+// Grows the grid to hold the robot and every ray's end.
+void GrowToHold(OccupancyGrid& grid, const Eigen::Vector2d& origin, const FrameRays& rays) {
   Eigen::Vector2d lo = origin;
   Eigen::Vector2d hi = origin;
-  for (const auto* rays : {&blind_rays, &miss_rays}) {
-    for (const Ray& r : *rays) {
+  for (const auto* pass : {&rays.blind, &rays.miss}) {
+    for (const Ray& r : *pass) {
       lo = lo.cwiseMin(r.end);
       hi = hi.cwiseMax(r.end);
     }
   }
   grid.GrowToCover(lo, hi);
-  grid.BeginFrame();
+}
 
-  // From here on in cell units: (world - grid origin) / resolution, whose
-  // floor is the cell (as GridGeometry::CellOf computes it).
+// A point in cell units: (world - grid origin) / resolution, whose floor is
+// the cell (as GridGeometry::CellOf computes it).
+CellIndex CellOfCells(const Eigen::Vector2d& p_cells) {
+  return CellIndex{static_cast<int>(std::floor(p_cells.x())),
+                   static_cast<int>(std::floor(p_cells.y()))};
+}
+
+// Turns the rays into cell units and applies the hit pass (each hit ray's end
+// cell); returns the cells it updated.
+std::size_t ToCellsAndApplyHits(OccupancyGrid& grid, FrameRays& rays) {
   const core::GridGeometry& geometry = grid.geometry();
-  const auto to_cells = [&](const Eigen::Vector2d& p) -> Eigen::Vector2d {
-    return (p - geometry.origin()) / resolution;
-  };
-  const auto cell_of = [](const Eigen::Vector2d& p_cells) {
-    return CellIndex{static_cast<int>(std::floor(p_cells.x())),
-                     static_cast<int>(std::floor(p_cells.y()))};
-  };
-  const Eigen::Vector2d from = to_cells(origin);
-  if (!geometry.Contains(cell_of(from))) {
-    throw std::logic_error("InsertProfile: the robot is off the grown grid");
-  }
+  const double resolution = geometry.resolution();
   std::size_t applied = 0;
-  for (auto* rays : {&blind_rays, &miss_rays}) {
-    for (Ray& r : *rays) {
-      r.end = to_cells(r.end);
+  for (auto* pass : {&rays.blind, &rays.miss}) {
+    for (Ray& r : *pass) {
+      r.end = (r.end - geometry.origin()) / resolution;
       r.length /= resolution;
-      const CellIndex end = cell_of(r.end);
+      const CellIndex end = CellOfCells(r.end);
       if (!geometry.Contains(end)) {
         throw std::logic_error("InsertProfile: a ray ends off the grown grid");
       }
       if (r.end_hit) applied += grid.ApplyAt(geometry.Flat(end), CellUpdate::kHit) ? 1 : 0;
     }
   }
-  applied += WalkPass<CellUpdate::kBlind>(grid, from, blind_rays);
-  applied += WalkPass<CellUpdate::kMiss>(grid, from, miss_rays);
+  return applied;
+}
+
+}  // namespace
+
+std::size_t InsertProfile(OccupancyGrid& grid, const core::ObstacleProfile& profile,
+                          const core::Pose2& world_T_robot) {
+  for (const auto& reading : profile.readings) CheckReading(reading);
+  FrameRays rays = RaysOf(profile.readings, world_T_robot, grid.geometry().resolution());
+  GrowToHold(grid, world_T_robot.translation(), rays);
+  grid.BeginFrame();
+  const core::GridGeometry& geometry = grid.geometry();
+  const Eigen::Vector2d from =
+      (world_T_robot.translation() - geometry.origin()) / geometry.resolution();
+  if (!geometry.Contains(CellOfCells(from))) {
+    throw std::logic_error("InsertProfile: the robot is off the grown grid");
+  }
+  std::size_t applied = ToCellsAndApplyHits(grid, rays);
+  applied += WalkPass<CellUpdate::kBlind>(grid, from, rays.blind);
+  applied += WalkPass<CellUpdate::kMiss>(grid, from, rays.miss);
   return applied;
 }
 

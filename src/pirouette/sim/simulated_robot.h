@@ -1,6 +1,5 @@
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -9,17 +8,6 @@
 #include "pirouette/sim/world.h"
 
 namespace pirouette::sim {
-
-// The command line's motion error: `base` (a world file's) with the standard
-// deviations {translation, rotation} and the biases {translation, rotation}
-// given, each where given.
-core::OdometryNoise OdometryNoiseWith(const core::OdometryNoise& base,
-                                      const std::optional<std::array<double, 2>>& deviations,
-                                      const std::optional<std::array<double, 2>>& biases);
-
-// Throws core::InputError naming --odometry-noise (deviations outside
-// [0, 1]) or --odometry-bias (biases outside [-0.5, 0.5]).
-void CheckOdometryNoise(const core::OdometryNoise& noise);
 
 // The simulated robot of a world, built the one way every command builds it
 // (explore in-process, sim-serve over TCP), so that the same world and seed

@@ -1,0 +1,86 @@
+#include "pirouette/draw/map_picture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "pirouette/draw/palette.h"
+
+namespace pirouette::draw {
+namespace {
+
+constexpr int kShift = MapCanvas::kShift;
+
+const cv::Scalar kPath = Scalar(kPathColour);
+const cv::Scalar kStop = Scalar(kStopColour);
+const cv::Scalar kStart = Scalar(kStartColour);
+const cv::Scalar kRobot = Scalar(kRobotColour);
+
+}  // namespace
+
+MapCanvas MapCanvas::Of(const core::GridGeometry& geometry,
+                        const std::function<std::uint8_t(const core::CellIndex&)>& grey,
+                        int target_width_px) {
+  MapCanvas canvas{{}, geometry, std::max(1, target_width_px / std::max(1, geometry.width()))};
+  cv::Mat3b cells(geometry.height(), geometry.width());
+  for (int y = 0; y < geometry.height(); ++y) {
+    for (int x = 0; x < geometry.width(); ++x) {
+      const std::uint8_t v = grey({x, y});
+      cells(geometry.height() - 1 - y, x) = cv::Vec3b(v, v, v);
+    }
+  }
+  cv::resize(cells, canvas.image, {}, canvas.scale, canvas.scale, cv::INTER_NEAREST);
+  return canvas;
+}
+
+cv::Point MapCanvas::Pixel(const Eigen::Vector2d& p_m) const {
+  const double u = (p_m.x() - geometry.origin().x()) / geometry.resolution() * scale;
+  const double v =
+      (geometry.height() - (p_m.y() - geometry.origin().y()) / geometry.resolution()) * scale;
+  return {static_cast<int>(std::lround(u * (1 << kShift))),
+          static_cast<int>(std::lround(v * (1 << kShift)))};
+}
+
+int MapCanvas::Fixed(double pixels) {
+  return static_cast<int>(std::lround(pixels * (1 << kShift)));
+}
+
+cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<core::Pose2>& path,
+                         const std::vector<core::Pose2>& stops, int target_width_px) {
+  const core::GridGeometry& g = grid.geometry();
+  MapCanvas canvas = MapCanvas::Of(
+      g,
+      [&](const core::CellIndex& c) {
+        return grid.Known(c)
+                   ? static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - grid.Probability(c))))
+                   : kUnknownGrey;
+      },
+      target_width_px);
+  cv::Mat3b& image = canvas.image;
+  const int scale = canvas.scale;
+  const auto pixel = [&](const Eigen::Vector2d& p) { return canvas.Pixel(p); };
+  const int thickness = std::max(1, scale / 2);
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    cv::line(image, pixel(path[i - 1].translation()), pixel(path[i].translation()), kPath,
+             thickness, cv::LINE_AA, kShift);
+  }
+  const int dot = std::max(3, 2 * scale);
+  for (const core::Pose2& stop : stops) {
+    cv::circle(image, pixel(stop.translation()), MapCanvas::Fixed(dot), kStop, cv::FILLED,
+               cv::LINE_AA, kShift);
+  }
+  if (!path.empty()) {
+    cv::circle(image, pixel(path.front().translation()), MapCanvas::Fixed(dot + 2), kStart, 2,
+               cv::LINE_AA, kShift);
+    const core::Pose2& last = path.back();
+    const double arrow_m = 3.0 * dot * g.resolution() / scale;
+    cv::circle(image, pixel(last.translation()), MapCanvas::Fixed(dot + 1), kRobot, cv::FILLED,
+               cv::LINE_AA, kShift);
+    cv::line(image, pixel(last.translation()),
+             pixel(last.translation() + arrow_m * last.Direction()), kRobot, thickness + 1,
+             cv::LINE_AA, kShift);
+  }
+  return image;
+}
+
+}  // namespace pirouette::draw

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "pirouette/core/pose2.h"
+#include "pirouette/mapping/occupancy_grid.h"
+
+namespace pirouette::draw {
+
+// A map grid drawn as a picture, north up, `scale` whole pixels a cell, and
+// where the map's points fall on it: the ground that DrawMapPicture and
+// DrawLocatePicture draw on.
+struct MapCanvas {
+  // Fractional bits of the points Pixel gives OpenCV's drawing functions.
+  static constexpr int kShift = 4;
+
+  cv::Mat3b image;
+  core::GridGeometry geometry;
+  int scale = 1;
+
+  // Cells of `geometry` in the grey levels `grey` gives them, at
+  // max(1, target_width_px / width) pixels a cell.
+  static MapCanvas Of(const core::GridGeometry& geometry,
+                      const std::function<std::uint8_t(const core::CellIndex&)>& grey,
+                      int target_width_px);
+  // Where a point of the map (metres) falls, in kShift fixed point.
+  cv::Point Pixel(const Eigen::Vector2d& p_m) const;
+  // `pixels` in kShift fixed point (a radius for cv::circle).
+  static int Fixed(double pixels);
+};
+
+// The picture of a run a person looks at (SPEC.md's map.png): the map in
+// grey levels by occupancy probability (white free, black occupied, the
+// unknown mid grey), the robot's path in blue, its stops (pirouettes) as
+// orange dots, the start in green and the final pose in red with its
+// heading; north up. `path` and `stops` are in the map's frame.
+// `target_width_px` sets the scale: whole pixels a cell, at least one.
+cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<core::Pose2>& path,
+                         const std::vector<core::Pose2>& stops, int target_width_px = 800);
+
+}  // namespace pirouette::draw

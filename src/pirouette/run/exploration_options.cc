@@ -1,0 +1,50 @@
+#include "pirouette/run/exploration_options.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "pirouette/core/input_error.h"
+
+namespace pirouette::run {
+
+std::string_view PlannerKindName(PlannerKind kind) {
+  return kind == PlannerKind::kFrontier ? "frontier" : "dt";
+}
+
+std::optional<PlannerKind> ParsePlannerKind(std::string_view name) {
+  if (name == "dt") return PlannerKind::kDistanceTransform;
+  if (name == "frontier") return PlannerKind::kFrontier;
+  return std::nullopt;
+}
+
+std::string_view LocalizeKindName(LocalizeKind kind) {
+  return kind == LocalizeKind::kScan ? "scan" : "none";
+}
+
+std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name) {
+  if (name == "none") return LocalizeKind::kNone;
+  if (name == "scan") return LocalizeKind::kScan;
+  return std::nullopt;
+}
+
+void CheckExplorationOptions(const ExplorationOptions& options) {
+  try {
+    options.occupancy.Check();
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError("sensor model", 0, "", e.what());
+  }
+  if (options.max_steps < 1) {
+    throw core::InputError("--max-steps", 0, "", "must be at least 1");
+  }
+  if (options.cell_m < 0.0 || !std::isfinite(options.cell_m) ||
+      (options.cell_m > 0.0 &&
+       (options.cell_m < mapping::kMinCellM || options.cell_m > mapping::kMaxCellM))) {
+    throw core::InputError("--cell", 0, "", "the map cell must be between 0.002 and 0.5 m");
+  }
+  if (options.max_range_m < 0.0 || !std::isfinite(options.max_range_m)) {
+    throw core::InputError("--max-range", 0, "", "must be a number > 0 (metres)");
+  }
+  if (options.odometry_noise) core::CheckOdometryNoise(*options.odometry_noise);
+}
+
+}  // namespace pirouette::run

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "pirouette/core/odometry_noise.h"
+#include "pirouette/localize/pose_tracker.h"
+#include "pirouette/mapping/occupancy_grid.h"
+#include "pirouette/vision/mask_source.h"
+
+namespace pirouette::run {
+
+enum class PlannerKind { kDistanceTransform, kFrontier };
+
+// How the explorer keeps its pose: kNone trusts the odometry; kScan corrects
+// each frame's heading against the earlier frames of its stop and the map
+// (localize::PoseTracker; docs/measurements.md, "Pose tracking").
+enum class LocalizeKind { kNone, kScan };
+
+// "none" | "scan", the command line's and run.json's names.
+std::string_view LocalizeKindName(LocalizeKind kind);
+std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name);
+
+// "dt" | "frontier", the command line's and run.json's names.
+std::string_view PlannerKindName(PlannerKind kind);
+// The planner of a name; nullopt for any other.
+std::optional<PlannerKind> ParsePlannerKind(std::string_view name);
+
+// The sensor model of an exploration. OctoMap's defaults (hit 0.7, miss
+// 0.4) need four looks before floor reads free (below 0.196): too timid for a
+// camera that sees each bearing in two frames of a pirouette, so the explorer
+// would keep going back to floor it has seen. One look decides here: a miss
+// makes an unknown cell free, a hit occupied; a hit and a miss cancel into
+// unknown, two hits outvote a miss.
+inline constexpr mapping::OccupancyOptions kExplorationOccupancy{.hit_probability = 0.8,
+                                                                 .miss_probability = 0.18};
+
+// The most straight moves a run makes by default before it stops with status
+// "step-limit": far more than any shipped world needs (the apartment takes a
+// few hundred), so that only a run that goes round in circles meets it.
+inline constexpr int kDefaultMaxSteps = 2000;
+
+// How an exploration runs. Zero for a length means "derive it".
+struct ExplorationOptions {
+  std::uint64_t seed = 1;
+  PlannerKind planner = PlannerKind::kDistanceTransform;
+  vision::MaskSource method = vision::MaskSource::kDefault;
+  // Straight moves allowed before the run stops with status "step-limit".
+  int max_steps = kDefaultMaxSteps;
+  // The map's cell; 0: 1 cm for a robot of radius under 0.1 m (the paper's),
+  // else 2 cm (the apartment robot).
+  double cell_m = 0.0;
+  // The range readings are trusted to; 0: the paper's rule for the camera
+  // and the cell (camera::MaxRange).
+  double max_range_m = 0.0;
+  // The sensor model: kExplorationOccupancy.
+  mapping::OccupancyOptions occupancy = kExplorationOccupancy;
+  // Drive back to the start at the end.
+  bool return_home = false;
+  // Pose tracking, and what it assumes of the odometry.
+  LocalizeKind localize = LocalizeKind::kNone;
+  localize::TrackerOptions tracker;
+  // The simulator's motion error; none: the world file's odometry_noise.
+  std::optional<core::OdometryNoise> odometry_noise;
+  // Checked between steps; when it becomes true the run ends with status
+  // "interrupted" and the map so far.
+  const std::atomic<bool>* stop_requested = nullptr;
+};
+
+// Throws core::InputError naming the option for a bad value.
+void CheckExplorationOptions(const ExplorationOptions& options);
+
+}  // namespace pirouette::run

@@ -1,0 +1,100 @@
+#pragma once
+
+#include <functional>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pirouette/camera/camera_model.h"
+#include "pirouette/core/move.h"
+#include "pirouette/core/pose2.h"
+#include "pirouette/eval/pose_error.h"
+#include "pirouette/localize/colour_map.h"
+#include "pirouette/mapping/occupancy_grid.h"
+#include "pirouette/robot/robot.h"
+
+namespace pirouette::run {
+
+// Where the wall time of a run went, seconds.
+struct StageTimes {
+  double render_s = 0.0;    // the simulator's camera (0 for a real robot)
+  double perceive_s = 0.0;  // segmentation and obstacle profile
+  double update_s = 0.0;    // the occupancy grid
+  double plan_s = 0.0;      // configuration space, distance transform, path
+  double localize_s = 0.0;  // matching frames against the map
+};
+
+// What a camera frame taken during the run showed, for the video.
+struct FrameEvent {
+  const cv::Mat3b& bgr;         // the camera's raw frame
+  const cv::Mat1b& floor_mask;  // 255 floor
+  const core::Pose2& odom_T_robot;
+  const mapping::OccupancyGrid& grid;
+};
+
+// The whole run, as the robot knows it (odometry frame = world frame at the
+// start) and, for the report, the simulator's truth.
+struct ExplorationResult {
+  std::string status;  // "complete", "step-limit", "stuck", "interrupted"
+  std::string reason;  // why, when stuck
+  // The map, in the odometry frame (placeholder 1 × 1 until the run starts).
+  mapping::OccupancyGrid grid{core::GridGeometry(0.01, Eigen::Vector2d::Zero(), 1, 1)};
+  // The map's colour layer: what the frames saw standing on the floor
+  // (FrameMapper::ColourSightings).
+  std::vector<localize::ColourSighting> colour_sightings;
+  std::vector<core::Pose2> path;   // odometry poses after every move, from the start
+  std::vector<core::Pose2> stops;  // where the robot pirouetted
+  int moves = 0;                   // straight moves
+  int turns = 0;                   // turns on the spot, pirouettes' included
+  int pirouettes = 0;
+  int frames = 0;
+  int blocked_looks = 0;     // looks that found the way blocked
+  int backups = 0;           // backing up to see a blind area's base or off a contact
+  int contact_backoffs = 0;  // of them, off a contact that stopped a move at once
+  double path_length_m = 0.0;
+  double rotation_deg = 0.0;
+  double wall_time_s = 0.0;
+  // Where the robot believed it was at the end (its odometry, corrected by
+  // the tracker); none when the robot stopped answering.
+  std::optional<core::Pose2> final_pose;
+  // The simulator's truth at the end; none for a real robot.
+  std::optional<core::Pose2> final_true_pose;
+  // Against the truth, over the frames; none for a real robot.
+  std::optional<eval::PoseError> pose_error;
+  // Where the robot believed each frame was taken when it took it (the
+  // tracker may move a stop's earlier frames later, in the map only).
+  std::vector<core::Pose2> frame_poses;
+  int matches = 0;       // frames the tracker saw
+  int corrections = 0;   // of them, those turned by a match with their stop's earlier frames
+  int scan_matches = 0;  // stops moved by a scan match against the stops before
+  StageTimes times;
+};
+
+// Progress after every step, for the terminal.
+struct ExplorationProgress {
+  int moves = 0;
+  int pirouettes = 0;
+  double known_area_m2 = 0.0;
+  double elapsed_s = 0.0;
+};
+
+struct ExplorationObserver {
+  std::function<void(const ExplorationProgress&)> on_progress;
+  std::function<void(const FrameEvent&)> on_frame;
+  // Every frame as the robot gave it, with the motions made since the one
+  // before (a run log records them), before it is mapped.
+  std::function<void(const robot::Frame&, const std::vector<core::MoveOutcome>& motions)>
+      on_capture;
+  // The frame just captured showed a forward move of leg_m blocked (the
+  // mapper confirmed the blocking hits).
+  std::function<void(double leg_m)> on_blocked;
+};
+
+// What the explorer must know of its robot.
+struct RobotDescription {
+  camera::CameraModel camera;
+  double radius_m = 0.0;  // the footprint's disc
+};
+
+}  // namespace pirouette::run

@@ -1,0 +1,292 @@
+#include "pirouette/run/explore_job.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "pirouette/camera/range_resolution.h"
+#include "pirouette/core/angle.h"
+#include "pirouette/core/input_error.h"
+#include "pirouette/draw/exploration_video.h"
+#include "pirouette/draw/map_picture.h"
+#include "pirouette/eval/map_evaluation.h"
+#include "pirouette/io/atomic_file.h"
+#include "pirouette/io/camera_file.h"
+#include "pirouette/io/colour_map_file.h"
+#include "pirouette/io/image_io.h"
+#include "pirouette/io/map_file.h"
+#include "pirouette/io/run_log.h"
+#include "pirouette/io/world_file.h"
+#include "pirouette/robot/remote_robot.h"
+#include "pirouette/run/progress_line.h"
+#include "pirouette/run/simulated_exploration.h"
+#include "pirouette/sim/simulated_robot.h"
+#include "pirouette/vision/floor_segmenter.h"
+
+namespace pirouette::run {
+namespace {
+
+// The longest wait for a robot's reply one may ask for (--robot-timeout).
+constexpr double kMaxRobotTimeoutS = 3600.0;
+
+double Round(double v, double unit) { return std::round(v / unit) * unit; }
+
+}  // namespace
+
+nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& result,
+                       const nlohmann::json& eval) {
+  nlohmann::json run;
+  run["format"] = "pirouette-run/1";
+  if (!request.world_path.empty()) run["world"] = request.world_path;
+  run["seed"] = request.options.seed;
+  run["status"] = result.status;
+  if (!result.reason.empty()) run["reason"] = result.reason;
+  run["planner"] = PlannerKindName(request.options.planner);
+  run["method"] = vision::MaskSourceName(request.options.method);
+  run["moves"] = result.moves;
+  run["turns"] = result.turns;
+  run["pirouettes"] = result.pirouettes;
+  run["frames"] = result.frames;
+  run["path_length_m"] = Round(result.path_length_m, 1e-4);
+  run["rotation_deg"] = Round(result.rotation_deg, 0.1);
+  run["wall_time_s"] = Round(result.wall_time_s, 1e-3);
+  run["stage_time_s"] = {{"render", Round(result.times.render_s, 1e-4)},
+                         {"perceive", Round(result.times.perceive_s, 1e-4)},
+                         {"update", Round(result.times.update_s, 1e-4)},
+                         {"plan", Round(result.times.plan_s, 1e-4)},
+                         {"localize", Round(result.times.localize_s, 1e-4)}};
+  run["localize"] = LocalizeKindName(request.options.localize);
+  if (request.options.localize == LocalizeKind::kScan) {
+    run["localization"] = {
+        {"frames_matched", result.matches},
+        {"frames_corrected", result.corrections},
+        {"stops_scan_matched", result.scan_matches},
+        {"time_per_matched_frame_s",
+         result.matches > 0 ? Round(result.times.localize_s / result.matches, 1e-6) : 0.0}};
+  }
+  const auto pose_json = [](const core::Pose2& p) {
+    return nlohmann::json::array(
+        {Round(p.x(), 1e-4), Round(p.y(), 1e-4), Round(core::RadToDeg(p.heading()), 0.01)});
+  };
+  if (result.final_pose) {
+    run["final_pose"] = pose_json(*result.final_pose);
+  } else if (!result.path.empty()) {
+    run["final_pose"] = pose_json(result.path.back());
+  }
+  if (result.final_true_pose) run["final_true_pose"] = pose_json(*result.final_true_pose);
+  if (result.pose_error) {
+    const eval::PoseError& e = *result.pose_error;
+    run["pose_error"] = {{"final_m", Round(e.final_m, 1e-4)},
+                         {"final_deg", Round(e.final_deg, 0.01)},
+                         {"mean_m", Round(e.mean_m, 1e-4)},
+                         {"mean_deg", Round(e.mean_deg, 0.01)},
+                         {"max_m", Round(e.max_m, 1e-4)}};
+  }
+  run["blocked_looks"] = result.blocked_looks;
+  run["backups"] = result.backups;
+  if (!request.robot_url.empty()) run["robot"] = request.robot_url;
+  if (!eval.is_null()) run["eval"] = eval;
+  return run;
+}
+
+mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result) {
+  // The map written is the part the robot saw, with a margin.
+  constexpr int kMapMarginCells = 5;
+  const std::filesystem::path out(out_dir);
+  const mapping::OccupancyGrid seen = result.grid.CroppedToKnown(kMapMarginCells);
+  mapping::TrinaryMap map = seen.ToTrinary();
+  io::WriteRosMap(map, (out / "map.yaml").string());
+  io::WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
+                     io::ColourMapPathFor((out / "map.yaml").string()));
+  io::WritePng((out / "map.png").string(), draw::DrawMapPicture(seen, result.path, result.stops));
+  return map;
+}
+
+namespace {
+
+// The robot's camera and size: the options', else the world's.
+RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* world) {
+  if (request.camera_path.empty() && world == nullptr) {
+    throw core::InputError("--camera", 0, "", "a robot without a world needs its camera file");
+  }
+  const double radius =
+      request.radius_m > 0.0 ? request.radius_m : (world ? world->robot().radius : 0.0);
+  if (!(radius > 0.0)) {
+    throw core::InputError("--radius", 0, "", "a robot without a world needs its radius (metres)");
+  }
+  return RobotDescription{
+      request.camera_path.empty() ? world->robot().camera : io::LoadCameraFile(request.camera_path),
+      radius};
+}
+
+// Connects to the robot at request.robot_url (before any output is made,
+// so that a robot that is not there leaves nothing behind).
+std::unique_ptr<robot::RemoteRobot> ConnectRobot(const ExploreRequest& request,
+                                                 const RobotDescription& robot_info) {
+  if (request.options.method == vision::MaskSource::kTruth) {
+    throw core::InputError("--method", 0, "", "the truth is only known in the simulator");
+  }
+  robot::RemoteRobotOptions remote;
+  remote.reply_timeout = std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
+  remote.frame_width = robot_info.camera.width();
+  remote.frame_height = robot_info.camera.height();
+  return std::make_unique<robot::RemoteRobot>(request.robot_url, remote);
+}
+
+// Explores through a connected robot.
+ExplorationResult ExploreRemote(robot::RemoteRobot& robot, const ExploreRequest& request,
+                                const RobotDescription& robot_info,
+                                const ExplorationObserver& observer) {
+  std::unique_ptr<vision::FloorSegmenter> segmenter = vision::MakeFloorSegmenter(
+      request.options.method == vision::MaskSource::kPaper ? vision::SegmentationMethod::kPaper
+                                                           : vision::SegmentationMethod::kDefault,
+      robot_info.camera);
+  return ExploreWithRobot(
+      robot, robot_info, request.options,
+      [&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, observer);
+}
+
+// The request's own checks (the options are checked with their noise).
+void CheckRequest(const ExploreRequest& request, bool has_world) {
+  if (request.robot_url.empty() && !has_world) {
+    throw core::InputError("--world", 0, "",
+                           "give a world to explore in the simulator, or --robot");
+  }
+  if (!(request.robot_timeout_s > 0.0) || request.robot_timeout_s > kMaxRobotTimeoutS) {
+    throw core::InputError("--robot-timeout", 0, "", "must be a number of seconds in (0, 3600]");
+  }
+  if (request.radius_m < 0.0 || !std::isfinite(request.radius_m)) {
+    throw core::InputError("--radius", 0, "", "must be a number > 0 (metres)");
+  }
+}
+
+void CreateOutDir(const std::string& out_dir) {
+  std::error_code error;
+  std::filesystem::create_directories(out_dir, error);
+  if (error) {
+    throw core::InputError(out_dir, 0, "--out",
+                           "cannot create the output folder: " + error.message());
+  }
+}
+
+// Records the run's log (--record) from the observer's captures. A log that
+// cannot be written (a full disk) stops recording, not the run: the map is
+// worth more than the log; error() says why it stopped.
+class Recorder {
+ public:
+  Recorder(const ExploreRequest& request, const RobotDescription& robot_info) {
+    io::RunLogInfo info;
+    info.radius_m = robot_info.radius_m;
+    info.cell_m = request.options.cell_m > 0.0 ? request.options.cell_m
+                                               : mapping::DefaultCellSize(robot_info.radius_m);
+    info.max_range_m = request.options.max_range_m > 0.0
+                           ? request.options.max_range_m
+                           : camera::MaxRange(robot_info.camera, info.cell_m);
+    info.method = vision::MaskSourceName(request.options.method);
+    info.localize = LocalizeKindName(request.options.localize);
+    if (request.robot_url.empty()) {
+      info.world = request.world_path;
+      info.seed = request.options.seed;
+    }
+    log_.emplace(request.record_dir, robot_info.camera, info);
+  }
+
+  void Watch(ExplorationObserver& observer) {
+    observer.on_capture = [this](const robot::Frame& frame,
+                                 const std::vector<core::MoveOutcome>& motions) {
+      if (!error_.empty()) return;
+      try {
+        log_->AddFrame(frame, motions);
+      } catch (const std::exception& e) {
+        error_ = e.what();
+      }
+    };
+    observer.on_blocked = [this](double leg_m) { log_->MarkBlocked(leg_m); };
+  }
+
+  void Close() {
+    if (!error_.empty()) return;
+    try {
+      log_->Close();
+    } catch (const std::exception& e) {
+      error_ = e.what();
+    }
+  }
+  const std::string& error() const { return error_; }
+
+ private:
+  std::optional<io::RunLogWriter> log_;
+  std::string error_;
+};
+
+nlohmann::json OdometryNoiseJson(const core::OdometryNoise& noise) {
+  return {{"translation", noise.translation},
+          {"rotation", noise.rotation},
+          {"translation_bias", noise.translation_bias},
+          {"rotation_bias", noise.rotation_bias}};
+}
+
+}  // namespace
+
+ExploreReport RunExplore(const ExploreRequest& request) {
+  std::optional<sim::World> world;
+  if (!request.world_path.empty()) world = io::LoadWorldFile(request.world_path);
+  CheckRequest(request, world.has_value());
+  ExplorationOptions options = request.options;
+  if (world && (request.odometry_noise || request.odometry_bias)) {
+    options.odometry_noise = core::OdometryNoiseWith(world->robot().odometry_noise,
+                                                     request.odometry_noise, request.odometry_bias);
+  }
+  CheckExplorationOptions(options);
+  const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
+  std::unique_ptr<robot::RemoteRobot> remote;
+  if (!request.robot_url.empty()) remote = ConnectRobot(request, robot_info);
+  CreateOutDir(request.out_dir);
+  const std::filesystem::path out(request.out_dir);
+  std::optional<draw::ExplorationVideo> video;
+  if (request.video) video.emplace((out / "explore.mp4").string());
+
+  run::ProgressLine progress(request.quiet);
+  ExplorationObserver observer;
+  observer.on_progress = [&progress](const ExplorationProgress& p) {
+    progress.Show(p.elapsed_s, [&] {
+      return fmt::format("explore: {} moves, {} pirouettes, {:.2f} m² known, {:.1f} s", p.moves,
+                         p.pirouettes, p.known_area_m2, p.elapsed_s);
+    });
+  };
+  if (video) {
+    observer.on_frame = [&video](const FrameEvent& event) {
+      video->AddFrame(event.bgr, event.floor_mask, event.odom_T_robot, event.grid);
+    };
+  }
+  std::optional<Recorder> recorder;
+  if (!request.record_dir.empty()) recorder.emplace(request, robot_info).Watch(observer);
+
+  ExploreReport report{request.robot_url.empty()
+                           ? Explore(*world, options, observer)
+                           : ExploreRemote(*remote, request, robot_info, observer),
+                       {},
+                       {}};
+  if (recorder) {
+    recorder->Close();
+    report.record_error = recorder->error();
+  }
+  const mapping::TrinaryMap map = WriteMapOutputs(out.string(), report.result);
+  report.run =
+      RunJson(request, report.result,
+              world ? eval::MapEvaluationToJson(eval::EvaluateMap(map, *world)) : nlohmann::json());
+  if (!report.record_error.empty()) report.run["record_error"] = report.record_error;
+  if (request.robot_url.empty()) {
+    report.run["odometry_noise"] =
+        OdometryNoiseJson(options.odometry_noise.value_or(world->robot().odometry_noise));
+  }
+  io::WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
+  if (video) video->Finish();
+  return report;
+}
+
+}  // namespace pirouette::run

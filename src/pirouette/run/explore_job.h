@@ -1,0 +1,63 @@
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "pirouette/run/explorer.h"
+
+namespace pirouette::run {
+
+// What `pirouette explore` was asked.
+struct ExploreRequest {
+  std::string world_path;
+  std::string out_dir = "out";
+  ExplorationOptions options;
+  bool video = false;
+  bool quiet = false;
+  // Non-empty: also write a run log (pirouette-log/1) of the run there.
+  std::string record_dir;
+  // Non-empty: explore with the robot at this tcp://HOST:PORT (the line
+  // protocol, docs/robot-protocol.md) instead of in the simulator; the world,
+  // when given, is then only for the camera, the radius and the evaluation.
+  std::string robot_url;
+  std::string camera_path;        // the robot's camera file (default: the world's)
+  double radius_m = 0.0;          // the robot's radius (default: the world's)
+  double robot_timeout_s = 30.0;  // longest wait for a reply of the robot
+  // The simulator's motion error, overriding the world file's: standard
+  // deviations {translation, rotation} and biases {translation, rotation},
+  // as fractions of each move (core::OdometryNoise).
+  std::optional<std::array<double, 2>> odometry_noise;
+  std::optional<std::array<double, 2>> odometry_bias;
+};
+
+// What it made.
+struct ExploreReport {
+  ExplorationResult result;
+  nlohmann::json run;  // run.json's content
+  // Why the run log stopped being written, if it did (the run went on).
+  std::string record_error;
+};
+
+// Explores the world of the request and writes, atomically, OUT/map.yaml,
+// OUT/map.pgm, OUT/map.png, OUT/map_colours.png, OUT/run.json (SPEC.md) and with `video`
+// OUT/explore.mp4, and with `record_dir` a run log; the outputs are written whatever the status, so
+// an interrupted or stuck run keeps its map. Progress goes to standard error unless `quiet`. Throws
+// core::InputError for a bad world or option.
+ExploreReport RunExplore(const ExploreRequest& request);
+
+// Writes OUT/map.yaml, OUT/map.pgm (the part of the result's grid the robot
+// saw, with a margin), OUT/map.png (with its path and stops) and
+// OUT/map_colours.png (its colour layer: localize::ColourMap::FromSightings of
+// the result's colour sightings, io::WriteColourMap), atomically; returns
+// the map written.
+mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result);
+
+// run.json (SPEC.md's `pirouette-run/1`) for a result; `eval` is the map's
+// evaluation object (null: none, no world).
+nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& result,
+                       const nlohmann::json& eval);
+
+}  // namespace pirouette::run

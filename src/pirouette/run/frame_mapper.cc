@@ -1,0 +1,144 @@
+#include "pirouette/run/frame_mapper.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "pirouette/io/image_io.h"
+#include "pirouette/mapping/range_sensor_model.h"
+#include "pirouette/run/stage_timer.h"
+#include "pirouette/vision/column_colour.h"
+
+namespace pirouette::run {
+namespace {
+
+// 2 m square around the start, on whole cells.
+mapping::OccupancyGrid InitialGrid(const core::Pose2& start, double cell_m,
+                                   const mapping::OccupancyOptions& occupancy) {
+  constexpr double kHalf = 1.0;
+  const Eigen::Vector2d lo(std::floor((start.x() - kHalf) / cell_m) * cell_m,
+                           std::floor((start.y() - kHalf) / cell_m) * cell_m);
+  return mapping::OccupancyGrid(
+      core::GridGeometry::Covering(cell_m, lo, Eigen::Vector2d(2 * kHalf, 2 * kHalf)), occupancy);
+}
+
+// The colours of a frame's hits, in the robot's frame.
+std::vector<localize::ColourSighting> ColouredHits(const cv::Mat3b& bgr, const cv::Mat1b& mask,
+                                                   const core::ObstacleProfile& profile) {
+  std::vector<localize::ColourSighting> hits;
+  for (std::size_t u = 0; u < profile.readings.size(); ++u) {
+    const core::RangeReading& r = profile.readings[u];
+    if (r.kind != core::ReadingKind::kHit) continue;
+    const core::ColourClass c = vision::ColumnColour(bgr, mask, static_cast<int>(u));
+    if (c == core::ColourClass::kNone) continue;
+    hits.push_back(
+        {r.range_m * Eigen::Vector2d(std::cos(r.bearing_rad), std::sin(r.bearing_rad)), c});
+  }
+  return hits;
+}
+
+}  // namespace
+
+FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core::Pose2& start)
+    : setup_(setup),
+      mask_(std::move(mask)),
+      ipm_(setup.camera),
+      extractor_(ipm_, setup.max_range_m),
+      look_(explore::LookAheadOptions{setup.radius_m, camera::NearRange(ipm_), setup.max_range_m,
+                                      setup.cell_m}),
+      grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {
+  if (setup.tracking) {
+    tracker_.emplace(*setup.tracking);
+    view_extractor_.emplace(ipm_, setup.max_range_m * setup.tracking->view_range_factor);
+  }
+}
+
+FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
+  Seen seen;
+  {
+    run::StageTimer timer(perceive_s_);
+    seen.bgr = io::ToBgrMat(frame.image);
+    seen.mask = mask_(seen.bgr);
+    seen.profile = extractor_.Extract(seen.mask);
+    colour_frames_.push_back({frame.odometry, ColouredHits(seen.bgr, seen.mask, seen.profile)});
+  }
+  if (!tracker_) {
+    seen.pose = frame.odometry;
+    Insert(seen.profile, seen.pose);
+    return seen;
+  }
+  {
+    run::StageTimer timer(localize_s_);
+    if (tracker_->StartsStop(frame.odometry)) {
+      before_stop_ = grid_;
+      stop_events_.clear();
+    }
+    stop_poses_ = tracker_->Track(*before_stop_, view_extractor_->Extract(seen.mask),
+                                  setup_.max_range_m, frame.odometry);
+  }
+  stop_events_.push_back({seen.profile, std::nullopt});
+  seen.pose = stop_poses_.back();
+  for (std::size_t i = 0; i < stop_poses_.size(); ++i) {
+    colour_frames_[colour_frames_.size() - stop_poses_.size() + i].pose = stop_poses_[i];
+  }
+  // The stop's frames again, where the tracker now puts them.
+  grid_ = *before_stop_;
+  for (std::size_t i = 0; i < stop_events_.size(); ++i) {
+    Insert(stop_events_[i].profile, stop_poses_[i]);
+    if (stop_events_[i].blocked_leg_m) {
+      Confirm(stop_events_[i].profile, stop_poses_[i], *stop_events_[i].blocked_leg_m);
+    }
+  }
+  return seen;
+}
+
+std::vector<localize::ColourSighting> FrameMapper::ColourSightings() const {
+  std::vector<localize::ColourSighting> out;
+  for (const ColourFrame& f : colour_frames_) {
+    for (const localize::ColourSighting& h : f.hits_robot) {
+      out.push_back({f.pose * h.p_m, h.colour});
+    }
+  }
+  return out;
+}
+
+void FrameMapper::Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot) {
+  run::StageTimer timer(update_s_);
+  mapping::InsertProfile(grid_, profile, map_T_robot);
+  mapping::MarkFootprintFree(grid_, map_T_robot.translation(), setup_.radius_m);
+}
+
+void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
+  run::StageTimer timer(update_s_);
+  core::ObstacleProfile bump;
+  bump.max_range_m = setup_.radius_m + setup_.cell_m;
+  bump.readings.push_back({0.0, setup_.radius_m + 0.5 * setup_.cell_m, core::ReadingKind::kHit});
+  const core::Pose2 map_T_robot = ToMap(odom_T_robot);
+  mapping::InsertProfile(grid_, bump, map_T_robot);
+  // With tracking, the stop's frames are put again in the map as it was
+  // before the stop: the bump must be there too (a move that stopped at
+  // contact at once leaves the robot in the same stop).
+  if (before_stop_) mapping::InsertProfile(*before_stop_, bump, map_T_robot);
+}
+
+void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
+                                  const core::Pose2& map_T_robot, double leg_m) {
+  // With tracking, the stop's last frame's confirmation is put in again with it.
+  if (tracker_ && !stop_events_.empty()) stop_events_.back().blocked_leg_m = leg_m;
+  Confirm(profile, map_T_robot, leg_m);
+}
+
+void FrameMapper::Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
+                          double leg_m) {
+  const explore::LookAhead::Finding finding = look_.Blocking(profile, leg_m);
+  run::StageTimer timer(update_s_);
+  for (int round = 0; round < 4; ++round) {
+    grid_.BeginFrame();
+    for (const Eigen::Vector2d& hit : finding.hits_robot) {
+      const core::CellIndex c = grid_.geometry().CellOf(map_T_robot * hit);
+      if (grid_.LogOdds(c) <= 0.0F) grid_.Apply(c, mapping::CellUpdate::kHit);
+    }
+  }
+}
+
+}  // namespace pirouette::run

@@ -1,0 +1,135 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
+
+#include "pirouette/camera/camera_model.h"
+#include "pirouette/camera/inverse_perspective_map.h"
+#include "pirouette/core/obstacle_profile.h"
+#include "pirouette/core/pose2.h"
+#include "pirouette/explore/look_ahead.h"
+#include "pirouette/localize/colour_map.h"
+#include "pirouette/localize/pose_tracker.h"
+#include "pirouette/mapping/occupancy_grid.h"
+#include "pirouette/robot/robot.h"
+#include "pirouette/vision/profile_extractor.h"
+
+namespace pirouette::run {
+
+// What the map of a run depends on besides its frames.
+struct MapperSetup {
+  camera::CameraModel camera;
+  double radius_m = 0.0;     // the robot's disc
+  double cell_m = 0.0;       // the map's cell (> 0)
+  double max_range_m = 0.0;  // readings are trusted out to this range (> 0)
+  mapping::OccupancyOptions occupancy;
+  // Pose tracking (localize::PoseTracker, frame by frame); none: the map is
+  // made at the odometry's poses.
+  std::optional<localize::TrackerOptions> tracking;
+};
+
+// The floor mask (255 floor) of a raw BGR frame, from a segmenter that sees
+// the frames in the order they were taken.
+using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
+
+// Builds the occupancy grid of a run from its frames, the same way whether
+// they come live from a robot or from a recorded log, so that a log maps to
+// the map the run made. Each frame's obstacle profile goes into the grid
+// through the paper's range sensor model (mapping::InsertProfile), with the
+// robot's footprint free; a straight move that ended at contact adds a hit
+// in front of the robot (its bumper); a look that found the way blocked
+// confirms the blocking hits (ConfirmBlocking). With tracking, each frame's
+// pose is first corrected by the tracker (against the stop's earlier frames,
+// with a second profile of the frame read out to the tracker's
+// view_range_factor times max_range_m, and once the stop has 4 frames
+// against the map before the stop) and the
+// stop's frames, which the tracker may move, are put again in the map as it
+// was before the stop: the map's frame is the odometry's at the start, and
+// ToMap turns any later odometry pose into it.
+class FrameMapper {
+ public:
+  // The grid starts as 2 m square around `start` (odometry frame) and grows.
+  FrameMapper(const MapperSetup& setup, MaskFunction mask, const core::Pose2& start);
+
+  struct Seen {
+    cv::Mat3b bgr;   // the raw frame, BGR
+    cv::Mat1b mask;  // its floor, 255
+    core::ObstacleProfile profile;
+    core::Pose2 pose;  // where it went in the map (the odometry's, corrected)
+  };
+  // Perceives a frame and puts what it shows in the map at its odometry,
+  // corrected by the tracker.
+  Seen AddFrame(const robot::Frame& frame);
+
+  // The map pose of an odometry pose (the same without tracking).
+  core::Pose2 ToMap(const core::Pose2& odom_T_robot) const {
+    return tracker_ ? tracker_->ToMap(odom_T_robot) : odom_T_robot;
+  }
+  // The tracker; none without tracking.
+  const std::optional<localize::PoseTracker>& tracker() const { return tracker_; }
+
+  // A straight move stopped at contact with the robot at odom_T_robot.
+  void AddContact(const core::Pose2& odom_T_robot);
+
+  // The look from map_T_robot (profile) found a forward move of leg_m
+  // blocked: its hits in the corridor are made occupied in the map, so that
+  // the next plan goes another way (a cell seen free once takes several
+  // hits to read occupied).
+  void ConfirmBlocking(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
+                       double leg_m);
+
+  // Where the frames saw the bases of obstacles and their colours
+  // (vision::ColumnColour of each hit's column), at the frames' map poses (with
+  // tracking, where the tracker last put them): the map's colour layer.
+  std::vector<localize::ColourSighting> ColourSightings() const;
+
+  const mapping::OccupancyGrid& grid() const { return grid_; }
+  mapping::OccupancyGrid TakeGrid() { return std::move(grid_); }
+  const MapperSetup& setup() const { return setup_; }
+  const camera::InversePerspectiveMap& ipm() const { return ipm_; }
+  const explore::LookAhead& look_ahead() const { return look_; }
+
+  // Seconds spent segmenting and reading profiles, and updating the grid.
+  double perceive_s() const { return perceive_s_; }
+  double update_s() const { return update_s_; }
+  // Seconds spent tracking (matching frames).
+  double localize_s() const { return localize_s_; }
+
+ private:
+  MapperSetup setup_;
+  MaskFunction mask_;
+  camera::InversePerspectiveMap ipm_;
+  vision::ProfileExtractor extractor_;  // the profile tables, built once
+  // With tracking: the longer profile the tracker matches the frames with.
+  std::optional<vision::ProfileExtractor> view_extractor_;
+  explore::LookAhead look_;
+  // Puts a frame (or a confirmation) in grid_ at its map pose.
+  void Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot);
+  void Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot, double leg_m);
+
+  mapping::OccupancyGrid grid_;
+  std::optional<localize::PoseTracker> tracker_;
+  // With tracking: the map before the current stop, and what went into the
+  // map since, to put in again when the tracker moves the stop's frames.
+  struct StopEvent {
+    core::ObstacleProfile profile;
+    std::optional<double> blocked_leg_m;  // a ConfirmBlocking of the frame before
+  };
+  // Every frame's coloured hits in the robot's frame, and its map pose.
+  struct ColourFrame {
+    core::Pose2 pose;
+    std::vector<localize::ColourSighting> hits_robot;
+  };
+  std::vector<ColourFrame> colour_frames_;
+  std::optional<mapping::OccupancyGrid> before_stop_;
+  std::vector<StopEvent> stop_events_;
+  std::vector<core::Pose2> stop_poses_;
+  double localize_s_ = 0.0;
+  double perceive_s_ = 0.0;
+  double update_s_ = 0.0;
+};
+
+}  // namespace pirouette::run

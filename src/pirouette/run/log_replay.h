@@ -1,0 +1,36 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "pirouette/run/explorer.h"
+
+namespace pirouette::run {
+
+// What `pirouette map --log` was asked. Zero or empty: the log's own value
+// (log.yaml), else the explorer's default.
+struct MapLogRequest {
+  std::string log_dir;
+  std::string out_dir = "out";
+  std::string world_path;  // for the evaluation; empty: the log's world, if it has one
+  double radius_m = 0.0;
+  double cell_m = 0.0;
+  double max_range_m = 0.0;
+  std::string method;    // "default" | "paper"
+  std::string localize;  // "scan" | "none"
+  bool quiet = false;
+};
+
+struct MapLogReport {
+  ExplorationResult result;  // grid, path (the frames' odometry), frames, times
+  nlohmann::json run;        // run.json's content
+};
+
+// Builds the map of a run log (pirouette-log/1) frame by frame, exactly as
+// the run that recorded it did (FrameMapper), and writes the outputs of
+// explore: OUT/map.yaml, map.pgm, map.png and run.json (with the map's
+// evaluation when a world is known). Throws core::InputError for a bad log
+// or option (naming the file, line and field).
+MapLogReport RunMapLog(const MapLogRequest& request);
+
+}  // namespace pirouette::run
