@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's localization table: every shipped world, seeds 1..N, with
+# The pose tracking table (docs/measurements.md, "Pose tracking"): every shipped world, seeds 1..N, with
 # odometry noise of 5% translation and 5% rotation, explored with
 # --localize none and --localize scan, and with scan and no noise (what the
 # tracker costs where there is nothing to correct). Prints a Markdown table.

@@ -1,6 +1,5 @@
 // The whole per-frame perception pipeline as the robot runs it, against the
-// straightforward OpenCV chain, on the same rendered frames, one thread
-// (issue 3, "Speed").
+// straightforward OpenCV chain, on the same rendered frames, one thread.
 //
 //   build/release/bench/pirouette_bench --benchmark_filter='perceive/'
 //

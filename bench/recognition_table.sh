@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The README's place recognition and kidnapped-robot tables: every shipped
+# The place recognition and kidnapped-robot tables (docs/measurements.md,
+# "Place recognition", "Kidnapped robot"): every shipped
 # world, `pirouette places` (100 random queries, seed 1) and `pirouette
 # locate` (20 random poses a seed, on the map `explore` makes of the world,
 # with its colour layer) at the default range factor and, for comparison,

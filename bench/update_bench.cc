@@ -1,5 +1,5 @@
 // Occupancy grid updates: pirouette's grid against OctoMap inserting the same
-// rays, one thread (issue 4).
+// rays, one thread.
 //
 //   build/release/bench/pirouette_bench --benchmark_filter='update/'
 //

@@ -44,7 +44,7 @@ TEST(PerceptionEvalTest, ComparisonCountsClassesAndErrors) {
 }
 
 // With the simulator's true masks, what is left is the extractor's half-pixel
-// reading of a binary mask: far below the goals. (Every shipped world:
+// reading of a binary mask: far below a segmenter's errors. (Every shipped world:
 // tests/perception_loop_test.cc.)
 TEST(PerceptionEvalTest, TrueMasksMeasureTheExtractorAlone) {
   PerceptionEvalRequest request;

@@ -1,4 +1,5 @@
 #include "pirouette/io/atomic_file.h"
+#include "pirouette/testing/temp_dir.h"
 
 #include <gtest/gtest.h>
 
@@ -17,15 +18,13 @@ std::string ReadAll(const std::filesystem::path& p) {
 }
 
 TEST(AtomicFileTest, WritesAndReplacesWithoutLeavingTemporaries) {
-  const auto dir = std::filesystem::temp_directory_path() / "pirouette_atomic_file_test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const testing::TempDir temp("pirouette_atomic_file");
+  const std::filesystem::path& dir = temp.path();
   const auto path = dir / "out.txt";
   WriteFileAtomically(path.string(), "first");
   WriteFileAtomically(path.string(), "second, longer");
   EXPECT_EQ(ReadAll(path), "second, longer");
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(AtomicFileTest, MissingFolderIsAClearError) {

@@ -15,43 +15,14 @@
 
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::io {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder under the system's temporary folder, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = "pirouette_camera_file_test_" + std::to_string(::getpid()) + "_" +
-                       info->test_suite_name() + "_" + info->name();
-    std::replace(name.begin(), name.end(), '/', '_');
-    path_ = fs::temp_directory_path() / name;
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code error;
-    fs::remove_all(path_, error);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const fs::path& path() const { return path_; }
-
-  // Writes `text` to the file `name` in the folder; returns its path.
-  std::string Write(const std::string& name, const std::string& text) const {
-    const fs::path file = path_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file.string();
-  }
-
- private:
-  fs::path path_;
-};
+using testing::TempDir;
 
 // Runs `load`, which must throw core::InputError, and returns the error.
 template <typename F>

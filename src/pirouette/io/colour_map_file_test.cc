@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "pirouette/core/input_error.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::io {
 namespace {
@@ -16,12 +17,8 @@ namespace fs = std::filesystem;
 
 class ColourMapFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pirouette_colour_map_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  testing::TempDir temp_{"pirouette_colour_map"};
+  fs::path dir_ = temp_.path();
 };
 
 TEST_F(ColourMapFileTest, EveryClassAndNoneReadBack) {

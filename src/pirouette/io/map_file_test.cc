@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "pirouette/core/input_error.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::io {
 namespace {
@@ -44,14 +45,8 @@ TrinaryMap PatternMap(double resolution, Eigen::Vector2d origin, int width, int 
 
 class MapFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pirouette_map_file_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  testing::TempDir temp_{"pirouette_map_file"};
+  fs::path dir_ = temp_.path();
 
   std::string Path(const std::string& name) const { return (dir_ / name).string(); }
   std::string Write(const std::string& name, const std::string& bytes) const {
@@ -69,8 +64,6 @@ class MapFileTest : public ::testing::Test {
                                  "occupied_thresh: 0.65\nfree_thresh: 0.196\n" +
                                  extra);
   }
-
-  fs::path dir_;
 };
 
 // The InputError that `read` throws, or a failure.

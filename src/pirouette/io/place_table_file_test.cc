@@ -1,7 +1,6 @@
 #include "pirouette/io/place_table_file.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -10,6 +9,7 @@
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/mapping/radial_profile.h"
+#include "pirouette/testing/temp_dir.h"
 #include "pirouette/testing/test_places.h"
 
 namespace pirouette::io {
@@ -24,13 +24,10 @@ using testing::Grid;
 using testing::kBins;
 using testing::View;
 
-fs::path Temp(const std::string& name) {
-  return fs::temp_directory_path() /
-         ("pirouette_place_table_" + std::to_string(::getpid()) + "_" + name);
-}
 TEST(PlaceTableFileTest, SaveAndLoadRoundTrip) {
   const PlaceTable table = Grid();
-  const fs::path path = Temp("round_trip.yaml");
+  const testing::TempDir temp("pirouette_place_table");
+  const fs::path path = temp.path() / "round_trip.yaml";
   SavePlaceTable(table, path.string());
   const PlaceTable loaded = LoadPlaceTable(path.string());
   EXPECT_EQ(loaded.world(), "room");
@@ -56,11 +53,11 @@ TEST(PlaceTableFileTest, SaveAndLoadRoundTrip) {
   const PlaceView query = View(1.1, 0.8, 70.0);
   EXPECT_EQ(loaded.Nearest(query, SignatureKind::kColour)[0].entry,
             table.Nearest(query, SignatureKind::kColour)[0].entry);
-  fs::remove(path);
 }
 
 TEST(PlaceTableFileTest, MalformedFilesNameTheField) {
-  const fs::path path = Temp("bad.yaml");
+  const testing::TempDir temp("pirouette_place_table");
+  const fs::path path = temp.path() / "bad.yaml";
   SavePlaceTable(Grid(), path.string());
   std::string text;
   {
@@ -103,8 +100,7 @@ TEST(PlaceTableFileTest, MalformedFilesNameTheField) {
   } catch (const core::InputError& e) {
     EXPECT_EQ(e.field(), "places[0].ranges");
   }
-  EXPECT_THROW(LoadPlaceTable(Temp("missing.yaml").string()), core::InputError);
-  fs::remove(path);
+  EXPECT_THROW(LoadPlaceTable((temp.path() / "missing.yaml").string()), core::InputError);
 }
 
 }  // namespace

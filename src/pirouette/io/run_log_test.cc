@@ -9,6 +9,7 @@
 
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/camera_file.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::io {
 namespace {
@@ -33,15 +34,11 @@ robot::Frame GreyFrame(const camera::CameraModel& camera, const core::Pose2& pos
 
 class RunLogTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pirouette_run_log_unit_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  testing::TempDir temp_{"pirouette_run_log"};
 
   void WriteCsv(const std::string& text) { std::ofstream(dir_ / "frames.csv") << text; }
 
-  fs::path dir_;
+  fs::path dir_ = temp_.path() / "log";  // not there until a test makes it
 };
 
 TEST_F(RunLogTest, WrittenLogReadsBackWithOdometryMotionsAndBlockedLegs) {

@@ -58,7 +58,7 @@ std::array<double, 7> RawHuMoments(const std::vector<double>& ranges_m);
 // The heading-invariant Fourier signature: |X_k| / N for k = 0 … keep − 1 of
 // the ranges' DFT X (N bins). A turn of the robot shifts the ROP circularly,
 // which changes only the phases: the magnitudes name the place whatever the
-// heading (the alternative to §5.3's DCT that the issue asks for).
+// heading (an alternative to §5.3's DCT, which is not heading-invariant).
 inline constexpr int kFourierSignatureLength = 20;
 std::vector<double> FourierSignature(const std::vector<double>& ranges_m,
                                      int keep = kFourierSignatureLength);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/mapping/radial_profile.h"
 
 namespace pirouette::localize {
 
@@ -124,9 +125,10 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
 }
 
 std::vector<Eigen::Vector2d> PoseTracker::StopHits() const {
-  // The nearest hit in each degree of bearing around the stop: the frames
-  // overlap, and a bearing's nearest hit is the one the others hide behind.
-  constexpr int kBins = 360;
+  // The nearest hit in each degree of bearing around the stop (the ROP's
+  // bins): the frames overlap, and a bearing's nearest hit is the one the
+  // others hide behind.
+  constexpr int kBins = mapping::kRadialProfileBins;
   std::vector<Eigen::Vector2d> nearest(kBins, Eigen::Vector2d::Zero());
   std::vector<double> range(kBins, std::numeric_limits<double>::infinity());
   const double max_range_m = options_.hit_range_factor * map_range_m_;

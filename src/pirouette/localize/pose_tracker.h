@@ -36,14 +36,14 @@ struct TrackerOptions {
   // For the paper's camera 3 × 0.41 m lies beyond what the image's centre
   // columns see at their top row (1.10 m, camera::FloorSeenInEveryColumn),
   // so a wall between the two reads clear there; reading no farther
-  // (camera::LongRange, as place recognition does) was measured and tracked
-  // worse (README, "Localization: pose tracking"), so the tracker keeps it.
+  // (camera::LongRange, as place recognition does) tracks worse
+  // (docs/measurements.md, "Pose tracking").
   double view_range_factor = 3.0;
   // The stop's common turn against the map reads the stop's frames and the
   // map out to this many times the map's range (1 to view_range_factor):
   // the walls beyond the map's range, where the map has seen them, fix the
-  // heading better than the near floor. Measured against 1 (README,
-  // "Localization"): under 5% odometry noise the mean heading error falls
+  // heading better than the near floor. Against 1 (docs/measurements.md,
+  // "Pose tracking"): under 5% odometry noise the mean heading error falls
   // in every shipped world and false_free in three of five; without noise
   // false_free falls in four of five.
   double map_turn_range_factor = 3.0;
@@ -56,8 +56,9 @@ struct TrackerOptions {
   // The scan match's prior: the position's standard deviation grows by this
   // fraction of each move (and shrinks to the match's posterior after each),
   // the heading's is heading_prior_rad (the stop's frames have already been
-  // turned against the map: what is left is small). 3° was measured against
-  // 1.5° and 5° (README): 1.5° left heading error the match could see.
+  // turned against the map: what is left is small). 3° against 1.5° and 5°
+  // (docs/measurements.md, "Pose tracking"): 1.5° leaves heading error the
+  // match could see.
   double translation_fraction = 0.08;
   double heading_prior_rad = 3.0 * std::numbers::pi / 180.0;
   ScanMatchOptions scan;
@@ -72,7 +73,7 @@ struct TrackerOptions {
 
 // Pose tracking by matching what the camera sees against what it saw, a
 // stop at a time (Taylor, Geva & Boles 2005 name localization as the next
-// step; this is its first part). The robot looks only while it stands (a
+// step). The robot looks only while it stands (a
 // pirouette, a look before a move) and turns on the spot between the frames
 // of a stop, so they share its position and differ in heading alone: each
 // new frame's heading relative to the stop's earlier frames comes from its
@@ -87,10 +88,10 @@ struct TrackerOptions {
 // position and heading are corrected by correlative scan matching (Olson
 // 2009; MatchScan) of its hits against the hits of the stops before (kept
 // once per centimetre, not as the map's cells): this takes out the straight
-// moves' error. (A position match against the occupancy grid itself, with a
-// likelihood field or the beam model, was tried and made the maps worse:
-// the grid's walls, made from readings at many ranges, do not sit exactly
-// where a new view puts them; see the README.)
+// moves' error. The hits, not the occupancy grid, are matched: the grid's
+// walls, made from readings at many ranges, do not sit exactly where a new
+// view puts them, and matching against them makes the maps worse
+// (docs/measurements.md, "Pose tracking").
 // The map's frame is the odometry's at the start.
 class PoseTracker {
  public:

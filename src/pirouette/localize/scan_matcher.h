@@ -19,8 +19,8 @@ struct ScanMatchOptions {
   double floor = 0.05;
   // The hits' errors are not independent (a wall reads off by the same
   // amount all along it): their summed log-likelihood is divided by this.
-  // Pose tracking measured 2, 4 and 10 (README, "Localization: pose
-  // tracking"): 10 trusts the prior too much, 2 and 4 track alike.
+  // Of 2, 4 and 10 (docs/measurements.md, "Pose tracking"), 10 trusts the
+  // prior too much, 2 and 4 track alike.
   double correlation = 4.0;
   // The search: ±window_sigmas × the prior's σ in position (between
   // min_window_m and max_window_m) and heading, on cell_m and step_rad.

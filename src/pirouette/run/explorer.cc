@@ -93,8 +93,36 @@ class Explorer {
 
  private:
   enum class FollowOutcome { kReached, kBlocked, kStopped };
+  // Plans in a row blocked by what the robot saw before moving, before the
+  // run ends "stuck"; every kFailuresPerGiveUp of them the goal is given up,
+  // so the planner tries others first.
   static constexpr int kMaxFailures = 40;
+  static constexpr int kFailuresPerGiveUp = 4;
+  // Plans in a row after which the robot had not moved: a guard against a
+  // planning loop that never moves (no shipped world comes near it).
   static constexpr int kMaxIdlePlans = 500;
+  // Turns smaller than this are not made (radians).
+  static constexpr double kMinTurnRad = 1e-9;
+  // A waypoint is reached within this many cells; a straight move that made
+  // less than this stopped at once.
+  static constexpr double kReachedCells = 0.25;
+  // Off a contact the robot backs over floor known free within this fraction
+  // of its radius (see BackOffContact).
+  static constexpr double kBackOffWidthRadii = 0.5;
+  // Fewer unknown cells than this near the last stop are its own footprint's
+  // rim and specks: not worth a trip (StepAwayToSeeNearby).
+  static constexpr std::size_t kMinNearbyUnknown = 4;
+  // Stepping away to see nearby unknown floor: how far past the camera's
+  // near range (cells), and in how many directions, π / kStepAwayHalfTurnSteps
+  // (30°) apart, alternating either side of straight away.
+  static constexpr double kStepAwayPastNearCells = 3.0;
+  static constexpr int kStepAwayDirections = 12;
+  static constexpr double kStepAwayHalfTurnSteps = 6.0;
+  // Bisections for the point of a leg at the view distance of the goal: 30
+  // halve the leg to a billionth, far below a cell.
+  static constexpr int kViewPointBisections = 30;
+  // Tries to plan home again after a way home was blocked.
+  static constexpr int kReturnHomeAttempts = 5;
 
   void Loop() {
     start_pose_ = Pose();
@@ -138,7 +166,7 @@ class Explorer {
         failures = 0;
         Pirouette();
       } else if (outcome == FollowOutcome::kBlocked) {
-        if (++failures % 4 == 0) planner_->ReportUnreachable(*plan);
+        if (++failures % kFailuresPerGiveUp == 0) planner_->ReportUnreachable(*plan);
         if (failures >= kMaxFailures) {
           result_.status = "stuck";
           result_.reason = fmt::format(
@@ -187,7 +215,7 @@ class Explorer {
   }
 
   void Turn(double radians) {
-    if (std::abs(radians) < 1e-9) return;
+    if (std::abs(radians) < kMinTurnRad) return;
     Execute(core::Move::Turn(radians));
     ++result_.turns;
     result_.rotation_deg += std::abs(radians) * 180.0 / std::numbers::pi;
@@ -199,7 +227,7 @@ class Explorer {
   // drove), so that the tracker matches every frame against one it overlaps
   // and a turn's error does not go unseen into the map.
   void Face(double radians) {
-    if (options_.localize == LocalizeKind::kNone || std::abs(radians) < 1e-9) {
+    if (options_.localize == LocalizeKind::kNone || std::abs(radians) < kMinTurnRad) {
       Turn(radians);
       return;
     }
@@ -227,7 +255,7 @@ class Explorer {
       // likely beside its front, where neither the bump (put straight ahead)
       // nor the camera says. Every move that way would stop at once again
       // (under odometry error this ended runs `stuck`), so back off first.
-      if (metres > 0.0 && std::abs(outcome.achieved) < 0.25 * cell_m_) BackOffContact();
+      if (metres > 0.0 && std::abs(outcome.achieved) < kReachedCells * cell_m_) BackOffContact();
     }
     Report();
     if (result_.moves >= options_.max_steps && result_.status.empty()) {
@@ -259,7 +287,7 @@ class Explorer {
         const core::Pose2 pose = Pose();
         const Eigen::Vector2d to = target - pose.translation();
         const double distance = to.norm();
-        if (distance < 0.25 * cell_m_) break;
+        if (distance < kReachedCells * cell_m_) break;
         Face(core::NormalizeAngle(std::atan2(to.y(), to.x()) - pose.heading()));
         const double leg = std::min(distance, look_.LongestCheckedMove());
         const core::ObstacleProfile& profile = Look().profile;
@@ -312,7 +340,7 @@ class Explorer {
   // map, so the whole disc's corridor would refuse the very back-off that
   // frees it.
   void BackOffContact() {
-    if (BackUpOverKnownFree(0.5 * radius_m_)) ++result_.contact_backoffs;
+    if (BackUpOverKnownFree(kBackOffWidthRadii * radius_m_)) ++result_.contact_backoffs;
   }
 
   // The map the planner sees: unknown cells the robot cannot see from here
@@ -388,7 +416,7 @@ class Explorer {
       sum += centre;
     });
     // Ignore the robot's own footprint's rim and specks: not worth a trip.
-    if (nearby.size() < 4 || step_aways_ >= kMaxStepAways) {
+    if (nearby.size() < kMinNearbyUnknown || step_aways_ >= kMaxStepAways) {
       given_up_.insert(nearby.begin(), nearby.end());
       return false;
     }
@@ -396,11 +424,12 @@ class Explorer {
     const Eigen::Vector2d here = Pose().translation();
     const Eigen::Vector2d centroid = sum / static_cast<double>(nearby.size());
     const double away = std::atan2(here.y() - centroid.y(), here.x() - centroid.x());
-    const double distance = look_.options().near_m + 3.0 * cell_m_;
-    for (int k = 0; k < 12; ++k) {
+    const double distance = look_.options().near_m + kStepAwayPastNearCells * cell_m_;
+    for (int k = 0; k < kStepAwayDirections; ++k) {
       // Directions away from the unknown first, alternating either side.
       const int steps = (k + 1) / 2;  // 0, 1, 1, 2, 2, ...
-      const double offset = (k % 2 == 0 ? 1 : -1) * steps * std::numbers::pi / 6.0;
+      const double offset =
+          (k % 2 == 0 ? 1 : -1) * steps * std::numbers::pi / kStepAwayHalfTurnSteps;
       const double heading = away + offset;
       const Eigen::Vector2d to =
           here + distance * Eigen::Vector2d(std::cos(heading), std::sin(heading));
@@ -437,7 +466,7 @@ class Explorer {
       const Eigen::Vector2d d = to - from;
       double lo = 0.0;
       double hi = 1.0;
-      for (int i = 0; i < 30; ++i) {
+      for (int i = 0; i < kViewPointBisections; ++i) {
         const double mid = 0.5 * (lo + hi);
         ((from + mid * d - plan.goal_world).norm() > view ? lo : hi) = mid;
       }
@@ -450,7 +479,7 @@ class Explorer {
   // Back to the start over known-free floor: the distance transform from the
   // start's coarse cell alone, the unknown counted as blocked.
   void ReturnHome() {
-    for (int attempt = 0; attempt < 5; ++attempt) {
+    for (int attempt = 0; attempt < kReturnHomeAttempts; ++attempt) {
       explore::PlannerOptions planner_options;
       planner_options.robot_radius_m = radius_m_;
       explore::CoarseGrid grid = explore::PlanningGrid(mapper_.grid().ToTrinary(), planner_options);
@@ -491,6 +520,7 @@ class Explorer {
     observer_.on_progress(progress);
   }
 
+  // Step-aways a run makes at most (each a short trip and a pirouette).
   static constexpr int kMaxStepAways = 8;
 
   ExplorationOptions options_;

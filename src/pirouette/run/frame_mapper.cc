@@ -12,10 +12,12 @@
 namespace pirouette::run {
 namespace {
 
-// 2 m square around the start, on whole cells.
+// kInitialSideM square around the start, on whole cells (the grid grows as
+// readings need it).
 mapping::OccupancyGrid InitialGrid(const core::Pose2& start, double cell_m,
                                    const mapping::OccupancyOptions& occupancy) {
-  constexpr double kHalf = 1.0;
+  constexpr double kInitialSideM = 2.0;
+  constexpr double kHalf = 0.5 * kInitialSideM;
   const Eigen::Vector2d lo(std::floor((start.x() - kHalf) / cell_m) * cell_m,
                            std::floor((start.y() - kHalf) / cell_m) * cell_m);
   return mapping::OccupancyGrid(
@@ -132,7 +134,12 @@ void FrameMapper::Confirm(const core::ObstacleProfile& profile, const core::Pose
                           double leg_m) {
   const explore::LookAhead::Finding finding = look_.Blocking(profile, leg_m);
   run::StageTimer timer(update_s_);
-  for (int round = 0; round < 4; ++round) {
+  // Rounds of a hit to each blocking cell that does not yet lean occupied:
+  // with the exploration's sensor model two take a cell from the clamp's
+  // floor (seen free many times) past the occupied threshold; four leave
+  // room for any sensor model the options allow.
+  constexpr int kConfirmingHits = 4;
+  for (int round = 0; round < kConfirmingHits; ++round) {
     grid_.BeginFrame();
     for (const Eigen::Vector2d& hit : finding.hits_robot) {
       const core::CellIndex c = grid_.geometry().CellOf(map_T_robot * hit);

@@ -10,6 +10,7 @@
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/camera_file.h"
 #include "pirouette/io/run_log.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::run {
 namespace {
@@ -32,20 +33,16 @@ robot::Frame GreyFrame(const camera::CameraModel& camera, const core::Pose2& pos
   return frame;
 }
 
-class LogMappingTest : public ::testing::Test {
+class LogReplayTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pirouette_log_mapping_unit_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  testing::TempDir temp_{"pirouette_log_replay"};
 
   void WriteCsv(const std::string& text) { std::ofstream(dir_ / "frames.csv") << text; }
 
-  fs::path dir_;
+  fs::path dir_ = temp_.path() / "log";  // not there until a test makes it
 };
 
-TEST_F(LogMappingTest, MapRefusesACellOutOfRange) {
+TEST_F(LogReplayTest, MapRefusesACellOutOfRange) {
   const camera::CameraModel camera = TestCamera();
   io::RunLogInfo info;
   info.radius_m = 0.04;
