@@ -1,16 +1,17 @@
 // `pirouette calibrate` on chessboards and flat fields that the simulator
 // renders in-process, where the truth is known: intrinsics, vignetting and
-// mount within the bounds of issue 5, and exit code 2 with a message naming
-// the file or option for bad input (SPEC.md, "Commands").
+// mount within the bounds of docs/measurements.md, "Calibration", and exit
+// code 2 with a message naming the file or option for bad input (SPEC.md,
+// "Commands").
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -25,6 +26,7 @@
 #include "pirouette/sim/renderer.h"
 #include "pirouette/sim/scene_mesh.h"
 #include "pirouette/sim/world.h"
+#include "pirouette/testing/temp_dir.h"
 #include "run_pirouette.h"
 
 namespace {
@@ -70,11 +72,15 @@ sim::Chessboard Board(const Eigen::Vector2d& centre, int cols, int rows, double 
   return board;
 }
 
-// The number after "key": in a JSON text (NaN when absent).
-double Number(const std::string& json, const std::string& key) {
-  const std::size_t at = json.find("\"" + key + "\":");
-  if (at == std::string::npos) return std::nan("");
-  return std::stod(json.substr(at + key.size() + 3));
+// The number at `key` of a report (NaN when absent).
+double Number(const nlohmann::json& json, const std::string& key) {
+  return json.contains(key) ? json.at(key).get<double>() : std::nan("");
+}
+
+// A report on standard output: one JSON object on one line.
+nlohmann::json Report(const Result& r) {
+  EXPECT_EQ(r.stdout_only.find('\n'), r.stdout_only.size() - 1) << r.stdout_only;
+  return nlohmann::json::parse(r.stdout_only);
 }
 
 // True where every point of the board's outline (its margin included) is
@@ -124,25 +130,25 @@ bool WellInView(const sim::Chessboard& board, const CameraModel& cam, const Pose
 
 class CalibrateCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pirouette_calibrate_cli_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  // PIROUETTE_KEEP_TEST_FILES=1 keeps the rendered views and camera files to look at.
+  // PIROUETTE_KEEP_TEST_FILES=1 keeps a copy of the rendered views and camera
+  // files to look at, in the temporary folder's pirouette_calibrate_kept_TEST.
   void TearDown() override {
-    if (std::getenv("PIROUETTE_KEEP_TEST_FILES") == nullptr) fs::remove_all(dir_);
+    if (std::getenv("PIROUETTE_KEEP_TEST_FILES") == nullptr) return;
+    const fs::path kept =
+        fs::temp_directory_path() /
+        ("pirouette_calibrate_kept_" +
+         std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(kept);
+    fs::copy(dir_.path(), kept, fs::copy_options::recursive);
   }
 
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string Path(const std::string& name) const { return dir_ / name; }
 
   void WriteCamera(const std::string& path, const CameraModel& cam) const {
     std::ofstream(path) << pirouette::io::CameraFileText(cam);
   }
 
-  fs::path dir_;
+  pirouette::testing::TempDir dir_{"pirouette_calibrate_cli_test"};
 };
 
 TEST_F(CalibrateCliTest, IntrinsicsFromRenderedBoardsWithinOnePercent) {
@@ -193,9 +199,9 @@ TEST_F(CalibrateCliTest, IntrinsicsFromRenderedBoardsWithinOnePercent) {
   const Result r = RunPirouette("calibrate intrinsics --images " + Path("views") +
                                 " --board 9x6 --square 0.025 --out " + Path("camera.yaml"));
   ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
-  const std::string& json = r.stdout_only;
+  const nlohmann::json json = Report(r);
   EXPECT_NE(r.stderr_only.find("zz_blank.png"), std::string::npos);
-  EXPECT_NE(json.find("\"views_skipped\": [\"zz_blank.png\"]"), std::string::npos) << json;
+  EXPECT_EQ(json.at("views_skipped"), nlohmann::json::array({"zz_blank.png"})) << json;
   EXPECT_GE(Number(json, "views_used"), rendered - 1);
   EXPECT_LT(Number(json, "reprojection_error_px"), 0.3);
   const double fx_error = Number(json, "fx") / 277.128129211 - 1.0;
@@ -248,7 +254,9 @@ TEST_F(CalibrateCliTest, VignettingFromARenderedFlatFloor) {
   const Result r = RunPirouette("calibrate vignetting --image " + Path("flat.png") + " --camera " +
                                 Path("camera.yaml"));
   ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
+  const nlohmann::json json = Report(r);
   const CameraModel fitted = pirouette::io::LoadCameraFile(Path("camera.yaml"));
+  EXPECT_EQ(json.at("k"), nlohmann::json(fitted.vignetting().k)) << json;
   double worst = 0.0;
   for (std::size_t c = 0; c < 3; ++c) {
     const double error = fitted.vignetting().k[c] - truth.vignetting().k[c];
@@ -291,6 +299,7 @@ TEST_F(CalibrateCliTest, MountFromOneRenderedBoardOnTheFloor) {
                                   " --square " + std::to_string(c.square) + " --board-distance " +
                                   std::to_string(c.distance) + " --camera " + Path("camera.yaml"));
     ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
+    const nlohmann::json json = Report(r);
     const camera::Mount fitted = pirouette::io::LoadCameraFile(Path("camera.yaml")).mount();
     // The board is drawn sim::kChessboardLift above the floor.
     const double height_error = fitted.height_m - (c.mount.height_m - sim::kChessboardLift);
@@ -299,12 +308,13 @@ TEST_F(CalibrateCliTest, MountFromOneRenderedBoardOnTheFloor) {
     EXPECT_LT(std::abs(height_error), 0.002) << r.stdout_only;
     EXPECT_LT(std::abs(tilt_error), 0.3) << r.stdout_only;
     EXPECT_LT(std::abs(forward_error), 0.005) << r.stdout_only;
-    EXPECT_LT(std::abs(Number(r.stdout_only, "roll_deg")), 0.3);
+    EXPECT_EQ(Number(json, "height"), fitted.height_m) << json;
+    EXPECT_LT(std::abs(Number(json, "roll_deg")), 0.3);
     std::printf(
         "measured: mount at %.2f m, %.0f deg: height error %+.2f mm, tilt error %+.3f "
         "deg, forward error %+.2f mm, roll %+.3f deg\n",
         c.mount.height_m, RadToDeg(c.mount.tilt_rad), 1000.0 * height_error, tilt_error,
-        1000.0 * forward_error, Number(r.stdout_only, "roll_deg"));
+        1000.0 * forward_error, Number(json, "roll_deg"));
   }
 }
 

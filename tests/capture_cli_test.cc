@@ -5,13 +5,13 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "pirouette/testing/temp_dir.h"
 #include "run_pirouette.h"
 
 namespace {
@@ -27,6 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 using pirouette::testing::RunPirouette;
+using pirouette::testing::TempDir;
 using Result = pirouette::testing::RunResult;
 
 std::string World(const std::string& name) {
@@ -63,15 +65,12 @@ class CaptureCliTest : public ::testing::Test {
   // The video all tests share: the robot turning on the spot in the soccer
   // field, rendered through yujin.yaml (320×240), as MJPG in an AVI.
   static void SetUpTestSuite() {
-    shared_ =
-        fs::temp_directory_path() / ("pirouette_capture_cli_test_" + std::to_string(::getpid()));
-    fs::remove_all(shared_);
-    fs::create_directories(shared_);
-    cv::VideoWriter writer((shared_ / "turn.avi").string(),
-                           cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 5.0, cv::Size(320, 240));
+    shared_ = std::make_unique<TempDir>("pirouette_capture_cli_test");
+    cv::VideoWriter writer(*shared_ / "turn.avi", cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 5.0,
+                           cv::Size(320, 240));
     ASSERT_TRUE(writer.isOpened());
     for (int i = 0; i < kFrames; ++i) {
-      const std::string frame = (shared_ / "frame.png").string();
+      const std::string frame = *shared_ / "frame.png";
       const Result r =
           RunPirouette("render --world " + World("soccer_field.yaml") + " --pose 0.6,0.6," +
                        std::to_string(30 * i) + " --out " + frame);
@@ -82,24 +81,19 @@ class CaptureCliTest : public ::testing::Test {
     }
     writer.release();
   }
-  static void TearDownTestSuite() { fs::remove_all(shared_); }
+  static void TearDownTestSuite() { shared_.reset(); }
 
-  void SetUp() override {
-    dir_ = shared_ / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::create_directories(dir_);
-  }
+  static std::string Video() { return *shared_ / "turn.avi"; }
+  std::string Path(const std::string& name) const { return dir_ / name; }
 
-  static std::string Video() { return (shared_ / "turn.avi").string(); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-
-  static fs::path shared_;
-  fs::path dir_;
+  static std::unique_ptr<TempDir> shared_;  // the video, for the whole suite
+  TempDir dir_{"pirouette_capture_cli_test"};
 };
 
-fs::path CaptureCliTest::shared_;
+std::unique_ptr<TempDir> CaptureCliTest::shared_;
 
 TEST_F(CaptureCliTest, WritesAnOverlayAndAProfileLineForEveryFrame) {
-  const fs::path out = dir_ / "capture";
+  const fs::path out = dir_.path() / "capture";
   const Result r = RunPirouette("capture --source " + Video() + " --camera " + World("yujin.yaml") +
                                 " --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output();
@@ -152,7 +146,7 @@ TEST_F(CaptureCliTest, WritesAnOverlayAndAProfileLineForEveryFrame) {
 }
 
 TEST_F(CaptureCliTest, EveryAndFramesPickTheFramesUsed) {
-  const fs::path out = dir_ / "capture";
+  const fs::path out = dir_.path() / "capture";
   const Result r = RunPirouette("capture --source " + Video() + " --method paper --every 3 " +
                                 "--frames 2 --quiet --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output();
@@ -191,7 +185,7 @@ TEST_F(CaptureCliTest, InterruptStopsCleanlyKeepingWhatWasWritten) {
       writer.write(frames[static_cast<std::size_t>(i) % frames.size()]);
     }
   }
-  const fs::path out = dir_ / "capture";
+  const fs::path out = dir_.path() / "capture";
   const std::string command = "timeout --preserve-status -s INT 2 " +
                               std::string(PIROUETTE_BINARY) + " capture --source " + video +
                               " --camera " + World("yujin.yaml") + " --quiet --out " +
@@ -265,9 +259,8 @@ TEST(CaptureRealVideoTest, FindsTheFloorInFrontOfTheRobot) {
   ASSERT_GT(frames, 0);
   const int used = (frames + 9) / 10;
 
-  const fs::path out =
-      fs::temp_directory_path() / ("pirouette_capture_real_" + std::to_string(::getpid()));
-  fs::remove_all(out);
+  const TempDir dir("pirouette_capture_real");
+  const fs::path out = dir.path() / "capture";
   const Result r = RunPirouette("capture --source " + video.string() +
                                 " --every 10 --quiet --out " + out.string());
   ASSERT_EQ(r.exit_code, 0) << r.output();
@@ -290,7 +283,6 @@ TEST(CaptureRealVideoTest, FindsTheFloorInFrontOfTheRobot) {
   EXPECT_GT(floor_ends, used * 9 / 10);
   // A 160-wide frame is drawn twice as large.
   EXPECT_EQ(cv::imread((out / "000000.png").string()).cols, 320);
-  fs::remove_all(out);
 }
 
 }  // namespace

@@ -3,21 +3,17 @@
 // field for a bad world or map (SPEC.md, "Commands" and "eval").
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "pirouette/io/map_file.h"
 #include "pirouette/io/world_file.h"
 #include "pirouette/mapping/trinary_map.h"
+#include "pirouette/testing/temp_dir.h"
 #include "run_pirouette.h"
 
 namespace {
-
-namespace fs = std::filesystem;
 
 using pirouette::mapping::CellState;
 using pirouette::testing::RunPirouette;
@@ -25,19 +21,9 @@ using Result = pirouette::testing::RunResult;
 
 class EvalCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pirouette_eval_cli_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string Path(const std::string& name) const { return dir_ / name; }
   std::string Write(const std::string& name, const std::string& text) const {
-    std::ofstream(Path(name)) << text;
-    return Path(name);
+    return dir_.Write(name, text);
   }
   static std::string World(const std::string& name) {
     return std::string(PIROUETTE_WORLDS_DIR) + "/" + name;
@@ -59,7 +45,7 @@ class EvalCliTest : public ::testing::Test {
     return Path("map.yaml");
   }
 
-  fs::path dir_;
+  pirouette::testing::TempDir dir_{"pirouette_eval_cli_test"};
 };
 
 TEST_F(EvalCliTest, PrintsTheEvaluationAsJsonOnly) {

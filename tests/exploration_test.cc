@@ -1,7 +1,7 @@
-// Whole explorations in the simulator (issue 4): the robot, knowing nothing,
-// maps a world by itself to status "complete" within the issue's bounds:
-// coverage >= 0.98, false_free <= 0.005, false_occupied <= 0.02,
-// wall_error_m <= one map cell.
+// Whole explorations in the simulator: the robot, knowing nothing, maps a
+// world by itself to status "complete" within the bounds of
+// docs/measurements.md, "Exploration maps": coverage >= 0.98, false_free <=
+// 0.005, false_occupied <= 0.02, wall_error_m <= one map cell.
 
 #include <gtest/gtest.h>
 

@@ -10,6 +10,7 @@
 
 #include "pirouette/io/colour_map_file.h"
 #include "pirouette/io/map_file.h"
+#include "pirouette/testing/temp_dir.h"
 #include "run_pirouette.h"
 
 namespace pirouette::testing {
@@ -21,20 +22,14 @@ std::string World(const std::string& name) {
   return std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml";
 }
 
-fs::path TempDir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() /
-                 ("pirouette_explore_cli_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
-
 std::string Slurp(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
-  const fs::path out = TempDir("outputs");
+  const TempDir dir("pirouette_explore_cli");
+  const fs::path out = dir.path() / "out";
   const RunResult run = RunPirouette("explore --world " + World("soccer_field") + " --out " +
                                      out.string() + " --max-steps 4 --video --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.output();
@@ -75,11 +70,11 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
   ASSERT_EQ(eval.exit_code, 0) << eval.output();
   const nlohmann::json evaluated = nlohmann::json::parse(eval.stdout_only);
   EXPECT_EQ(evaluated["cells"], json["eval"]["cells"]);
-  fs::remove_all(out);
 }
 
 TEST(ExploreCliTest, BadInputIsRefusedWithExitTwo) {
-  const fs::path out = TempDir("bad");
+  const TempDir dir("pirouette_explore_cli");
+  const fs::path out = dir.path() / "out";
   EXPECT_EQ(RunPirouette("explore --world /nonexistent.yaml --out " + out.string()).exit_code, 2);
   const RunResult steps = RunPirouette("explore --world " + World("soccer_field") + " --out " +
                                        out.string() + " --max-steps 0");
@@ -87,7 +82,6 @@ TEST(ExploreCliTest, BadInputIsRefusedWithExitTwo) {
   EXPECT_NE(steps.stderr_only.find("--max-steps"), std::string::npos) << steps.stderr_only;
   EXPECT_EQ(RunPirouette("explore --world " + World("soccer_field") + " --planner astar").exit_code,
             2);
-  fs::remove_all(out);
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 // Pose tracking in whole explorations of the default world (Explore with
 // LocalizeKind::kScan). What it asserts is what the tracker measurably does
-// (README, "Localization"): it costs little where there is nothing to
-// correct, and it takes out most of the pose error 5% odometry noise makes,
-// and most of the false free cells with it. The goal bounds under
-// noise (complete, false_free <= 0.01, wall error within 1.5x the
-// noise-free figure) are not met in every world, so not asserted.
+// (docs/measurements.md, "Pose tracking"): it costs little where there is
+// nothing to correct, and it takes out most of the pose error 5% odometry
+// noise makes, and most of the false free cells with it. That table's goal
+// under noise (complete, false_free <= 0.01, wall error within 1.5x the
+// noise-free figure) is not met in every world, so not asserted.
 
 #include <gtest/gtest.h>
 
@@ -63,9 +63,9 @@ TEST(LocalizationLoopTest, TrackingTakesOutMostOfThePoseErrorOfNoisyOdometry) {
 
 // Under odometry error the robot can end a move touching a wall it mapped a
 // few centimetres off, beside its front: every move that way then stops at
-// once. This run (the maze, seed 3, 5% noise) used to end `stuck` after 40
-// such moves in a row; now the explorer backs off such a contact, and the
-// run completes.
+// once. In this run (the maze, seed 3, 5% noise) that happens 40 times in a
+// row unless the explorer backs off such a contact; it does, and the run
+// completes.
 TEST(LocalizationLoopTest, ARobotStuckAgainstAWallBacksOffAndGoesOn) {
   const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/maze.yaml");
   const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.05, 3);

@@ -4,14 +4,15 @@
 // its answers to bad input.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "pirouette/testing/temp_dir.h"
 #include "run_pirouette.h"
 
 namespace pirouette::testing {
@@ -32,20 +33,21 @@ std::string Slurp(const fs::path& path) {
 class LocateCliTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("pirouette_locate_cli_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    temp_ = std::make_unique<TempDir>("pirouette_locate_cli");
+    dir_ = temp_->path();
     const RunResult explored = RunPirouette("explore --world " + World("soccer_field") +
                                             " --quiet --out " + (dir_ / "soccer").string());
     ASSERT_EQ(explored.exit_code, 0) << explored.output();
   }
-  static void TearDownTestSuite() { fs::remove_all(dir_); }
+  static void TearDownTestSuite() { temp_.reset(); }
 
   static std::string Map() { return (dir_ / "soccer" / "map.yaml").string(); }
 
-  static fs::path dir_;
+  static std::unique_ptr<TempDir> temp_;  // the exploration, for the whole suite
+  static fs::path dir_;                   // temp_'s path
 };
 
+std::unique_ptr<TempDir> LocateCliTest::temp_;
 fs::path LocateCliTest::dir_;
 
 // Found within one coarse cell and 10 degrees of the truth, or "cannot

@@ -1,9 +1,10 @@
 // The geometry side of perception over every shipped world, in the simulator:
 // pirouettes at random poses, the true floor masks through the profile
-// extractor, against the ray-cast truth (issue 3, "Simulated frames"). What
-// is left is the half pixel a binary mask resolves, far below the issue's
-// goals (median 0.5 cm, p95 2 cm, wrong class 1%); the segmenters' own
-// figures come from `pirouette perception-eval --method paper|default`.
+// extractor, against the ray-cast truth. What is left is the half pixel a
+// binary mask resolves, far below the goals of docs/measurements.md,
+// "Perception accuracy" (median 0.5 cm, p95 2 cm, wrong class 1%); the
+// segmenters' own figures come from `pirouette perception-eval --method
+// paper|default`.
 
 #include <gtest/gtest.h>
 

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "pirouette/testing/temp_dir.h"
 #include "run_pirouette.h"
 
 namespace pirouette::testing {
@@ -19,21 +20,14 @@ std::string World(const std::string& name) {
   return std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml";
 }
 
-fs::path TempDir(const std::string& name) {
-  fs::path dir = fs::temp_directory_path() /
-                 ("pirouette_places_cli_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 std::string Slurp(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 TEST(PlacesCliTest, BuildsSavesAndLoadsTheTableAndWritesTheReport) {
-  const fs::path dir = TempDir("run");
+  const TempDir temp("pirouette_places_cli");
+  const fs::path& dir = temp.path();
   const std::string common = "places --world " + World("soccer_field") +
                              " --queries 3 --spacing 0.3 --seed 2 --quiet --table " +
                              (dir / "table.yaml").string();
@@ -67,25 +61,22 @@ TEST(PlacesCliTest, BuildsSavesAndLoadsTheTableAndWritesTheReport) {
   const nlohmann::json same = nlohmann::json::parse(Slurp(dir / "third.json"));
   EXPECT_EQ(same["signatures"], again["signatures"]);
   EXPECT_EQ(same["query_log"], again["query_log"]);
-  fs::remove_all(dir);
 }
 
 TEST(PlacesCliTest, BadInputIsRefusedWithExitTwo) {
-  const fs::path dir = TempDir("bad");
+  const TempDir temp("pirouette_places_cli");
   EXPECT_EQ(RunPirouette("places --world /nonexistent.yaml").exit_code, 2);
   const RunResult queries =
       RunPirouette("places --world " + World("soccer_field") + " --queries 0");
   EXPECT_EQ(queries.exit_code, 2);
   EXPECT_NE(queries.stderr_only.find("--queries"), std::string::npos) << queries.stderr_only;
-  {
-    std::ofstream out(dir / "broken.yaml");
-    out << "format: pirouette-places/1\nworld: soccer_field\nmax_range_m: nope\nplaces: []\n";
-  }
-  const RunResult table = RunPirouette("places --world " + World("soccer_field") +
-                                       " --queries 1 --table " + (dir / "broken.yaml").string());
+  const std::string broken = temp.Write(
+      "broken.yaml",
+      "format: pirouette-places/1\nworld: soccer_field\nmax_range_m: nope\nplaces: []\n");
+  const RunResult table =
+      RunPirouette("places --world " + World("soccer_field") + " --queries 1 --table " + broken);
   EXPECT_EQ(table.exit_code, 2);
   EXPECT_NE(table.stderr_only.find("max_range_m"), std::string::npos) << table.stderr_only;
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // Floor segmentation on real photos (../shared/realdata/visar, read in place,
 // never copied): a guard against regressions, not the tuning target. The
-// bounds sit well below what the methods measure (README of the data set:
-// tune on photos 0–69, report 70–99; `pirouette segment-eval` prints both).
+// bounds sit well below what the methods measure (docs/measurements.md, "Real
+// photos": tuned on photos 0–69, reported on 70–99, as the data set's
+// ../shared/realdata/visar/README.md asks; `pirouette segment-eval` prints
+// both).
 
 #include <gtest/gtest.h>
 

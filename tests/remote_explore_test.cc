@@ -1,4 +1,4 @@
-// Exploring through the robot line protocol (issue 5): a shipped world
+// Exploring through the robot line protocol: a shipped world
 // explored through `pirouette sim-serve` on 127.0.0.1 gives the same map as
 // in-process; a robot that stops answering or refuses ends the run "stuck"
 // with a clear reason, and the map so far is written.
@@ -13,7 +13,6 @@
 #include <condition_variable>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -23,6 +22,7 @@
 #include "pirouette/robot/robot_server.h"
 #include "pirouette/run/explore_job.h"
 #include "pirouette/testing/fake_robot.h"
+#include "pirouette/testing/temp_dir.h"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
 
@@ -31,34 +31,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 std::string World(const std::string& name) {
   return std::string(PIROUETTE_WORLDS_DIR) + "/" + name;
 }
 
 class RemoteExploreTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pirouette_remote_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
   void TearDown() override {
     if (server_pid_ > 0) {
       kill(server_pid_, SIGTERM);
       int status = 0;
       waitpid(server_pid_, &status, 0);
     }
-    fs::remove_all(dir_);
   }
 
   // Starts `pirouette sim-serve` on a free port; returns the port.
   int StartSimServe(const std::string& world) {
-    const std::string port_file = (dir_ / "port").string();
+    const std::string port_file = dir_ / "port";
     std::vector<std::string> args = {PIROUETTE_BINARY, "sim-serve", "--world",     world,
                                      "--port",         "0",         "--port-file", port_file};
     std::vector<char*> argv;
@@ -75,7 +64,7 @@ class RemoteExploreTest : public ::testing::Test {
     return port;
   }
 
-  fs::path dir_;
+  testing::TempDir dir_{"pirouette_remote"};
   pid_t server_pid_ = 0;
 };
 
@@ -85,20 +74,20 @@ TEST_F(RemoteExploreTest, SimServeGivesTheSameMapAsInProcess) {
 
   ExploreRequest local;
   local.world_path = World("soccer_field.yaml");
-  local.out_dir = (dir_ / "local").string();
+  local.out_dir = dir_ / "local";
   local.quiet = true;
   const ExploreReport in_process = RunExplore(local);
 
   ExploreRequest remote = local;
-  remote.out_dir = (dir_ / "remote").string();
+  remote.out_dir = dir_ / "remote";
   remote.robot_url = "tcp://127.0.0.1:" + std::to_string(port);
   const ExploreReport over_tcp = RunExplore(remote);
 
   EXPECT_EQ(over_tcp.result.status, "complete") << over_tcp.result.reason;
   EXPECT_EQ(over_tcp.result.frames, in_process.result.frames);
   EXPECT_EQ(over_tcp.result.moves, in_process.result.moves);
-  EXPECT_EQ(ReadAll(dir_ / "remote" / "map.pgm"), ReadAll(dir_ / "local" / "map.pgm"));
-  EXPECT_EQ(ReadAll(dir_ / "remote" / "map.yaml"), ReadAll(dir_ / "local" / "map.yaml"));
+  EXPECT_EQ(dir_.Read("remote/map.pgm"), dir_.Read("local/map.pgm"));
+  EXPECT_EQ(dir_.Read("remote/map.yaml"), dir_.Read("local/map.yaml"));
   EXPECT_EQ(over_tcp.run["eval"], in_process.run["eval"]);
   EXPECT_EQ(over_tcp.run["robot"], remote.robot_url);
 }
@@ -177,16 +166,16 @@ TEST_F(RemoteExploreTest, RobotThatStopsAnsweringEndsTheRunStuckWithTheMapSoFar)
   request.camera_path = World("yujin.yaml");
   request.radius_m = 0.04;
   request.robot_timeout_s = 0.3;
-  request.out_dir = (dir_ / "out").string();
+  request.out_dir = dir_ / "out";
   request.quiet = true;
   const ExploreReport report = RunExplore(request);
 
   EXPECT_EQ(report.result.status, "stuck");
   EXPECT_NE(report.result.reason.find("did not answer"), std::string::npos) << report.result.reason;
   EXPECT_EQ(report.result.frames, 5);
-  EXPECT_TRUE(fs::exists(dir_ / "out" / "map.yaml"));
-  EXPECT_TRUE(fs::exists(dir_ / "out" / "map.pgm"));
-  EXPECT_TRUE(fs::exists(dir_ / "out" / "run.json"));
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "map.yaml"));
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "map.pgm"));
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "run.json"));
   EXPECT_FALSE(report.run.contains("eval"));  // no world, no truth
 }
 
@@ -199,13 +188,13 @@ TEST_F(RemoteExploreTest, RobotThatRefusesACommandEndsTheRunStuck) {
   request.robot_url = serving.Url();
   request.camera_path = World("yujin.yaml");
   request.radius_m = 0.04;
-  request.out_dir = (dir_ / "out").string();
+  request.out_dir = dir_ / "out";
   request.quiet = true;
   const ExploreReport report = RunExplore(request);
 
   EXPECT_EQ(report.result.status, "stuck");
   EXPECT_NE(report.result.reason.find("unplugged"), std::string::npos) << report.result.reason;
-  EXPECT_TRUE(fs::exists(dir_ / "out" / "map.yaml"));
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "map.yaml"));
 }
 
 // A robot whose frames are not the camera file's size answers garbage for
@@ -218,14 +207,14 @@ TEST_F(RemoteExploreTest, FramesOfAnotherSizeThanTheCameraEndTheRunStuck) {
   request.robot_url = serving.Url();
   request.camera_path = World("yujin.yaml");  // 320 x 240
   request.radius_m = 0.04;
-  request.out_dir = (dir_ / "out").string();
+  request.out_dir = dir_ / "out";
   request.quiet = true;
   const ExploreReport report = RunExplore(request);
 
   EXPECT_EQ(report.result.status, "stuck");
   EXPECT_NE(report.result.reason.find("640x480"), std::string::npos) << report.result.reason;
   EXPECT_EQ(report.result.frames, 0);
-  EXPECT_TRUE(fs::exists(dir_ / "out" / "map.yaml"));
+  EXPECT_TRUE(fs::exists(dir_.path() / "out" / "map.yaml"));
 }
 
 // A robot that is not there: a clear error, and no output folder half made.
@@ -234,12 +223,12 @@ TEST_F(RemoteExploreTest, NoRobotThereIsAnErrorBeforeAnyOutput) {
   request.robot_url = "tcp://127.0.0.1:1";  // nothing serves port 1
   request.camera_path = World("yujin.yaml");
   request.radius_m = 0.04;
-  request.out_dir = (dir_ / "out").string();
-  request.record_dir = (dir_ / "log").string();
+  request.out_dir = dir_ / "out";
+  request.record_dir = dir_ / "log";
   request.quiet = true;
   EXPECT_THROW(RunExplore(request), robot::RobotError);
-  EXPECT_FALSE(fs::exists(dir_ / "out"));
-  EXPECT_FALSE(fs::exists(dir_ / "log"));
+  EXPECT_FALSE(fs::exists(dir_.path() / "out"));
+  EXPECT_FALSE(fs::exists(dir_.path() / "log"));
 }
 
 }  // namespace

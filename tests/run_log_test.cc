@@ -1,38 +1,31 @@
-// Run logs (issue 5): a run explored with --record and mapped again from its
+// Run logs: a run explored with --record and mapped again from its
 // log with `map --log` gives the same map, byte for byte.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <array>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "pirouette/io/run_log.h"
 #include "pirouette/run/explore_job.h"
 #include "pirouette/run/log_replay.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::run {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadAll(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 class RunLogRoundTripTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pirouette_run_log_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
+  std::string Path(const std::string& name) const { return dir_ / name; }
+  // The bytes of DIR/folder/file.
+  std::string Read(const std::string& folder, const std::string& file) const {
+    return dir_.Read(folder + "/" + file);
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
-  fs::path dir_;
+  testing::TempDir dir_{"pirouette_run_log"};
 };
 
 // The maze makes the explorer find a move blocked and back up to see, so the
@@ -40,8 +33,8 @@ class RunLogRoundTripTest : public ::testing::Test {
 TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
   run::ExploreRequest explore;
   explore.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/maze.yaml";
-  explore.out_dir = (dir_ / "explore").string();
-  explore.record_dir = (dir_ / "log").string();
+  explore.out_dir = Path("explore");
+  explore.record_dir = Path("log");
   explore.quiet = true;
   const ExploreReport explored = RunExplore(explore);
   ASSERT_EQ(explored.result.status, "complete") << explored.result.reason;
@@ -56,17 +49,16 @@ TEST_F(RunLogRoundTripTest, MapFromTheLogIsTheMapTheRunMade) {
 
   run::MapLogRequest map;
   map.log_dir = explore.record_dir;
-  map.out_dir = (dir_ / "map").string();
+  map.out_dir = Path("map");
   map.quiet = true;
   const MapLogReport mapped = RunMapLog(map);
   EXPECT_EQ(mapped.result.frames, explored.result.frames);
-  EXPECT_EQ(ReadAll(dir_ / "map" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
-  EXPECT_EQ(ReadAll(dir_ / "map" / "map.yaml"), ReadAll(dir_ / "explore" / "map.yaml"));
+  EXPECT_EQ(Read("map", "map.pgm"), Read("explore", "map.pgm"));
+  EXPECT_EQ(Read("map", "map.yaml"), Read("explore", "map.yaml"));
   EXPECT_EQ(mapped.run["eval"], explored.run["eval"]);
-  EXPECT_EQ(ReadAll(dir_ / "map" / "map_colours.png"),
-            ReadAll(dir_ / "explore" / "map_colours.png"));
-  EXPECT_TRUE(fs::exists(dir_ / "map" / "map.png"));
-  EXPECT_TRUE(fs::exists(dir_ / "map" / "run.json"));
+  EXPECT_EQ(Read("map", "map_colours.png"), Read("explore", "map_colours.png"));
+  EXPECT_TRUE(fs::exists(dir_.path() / "map" / "map.png"));
+  EXPECT_TRUE(fs::exists(dir_.path() / "map" / "run.json"));
 }
 
 }  // namespace
@@ -80,8 +72,8 @@ namespace {
 TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
   run::ExploreRequest explore;
   explore.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml";
-  explore.out_dir = (dir_ / "explore").string();
-  explore.record_dir = (dir_ / "log").string();
+  explore.out_dir = Path("explore");
+  explore.record_dir = Path("log");
   explore.quiet = true;
   explore.options.localize = LocalizeKind::kScan;
   explore.odometry_noise = std::array<double, 2>{0.05, 0.05};
@@ -91,19 +83,18 @@ TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
 
   run::MapLogRequest map;
   map.log_dir = explore.record_dir;
-  map.out_dir = (dir_ / "map").string();
+  map.out_dir = Path("map");
   map.quiet = true;
   run::RunMapLog(map);
-  EXPECT_EQ(ReadAll(dir_ / "map" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
-  EXPECT_EQ(ReadAll(dir_ / "map" / "map.yaml"), ReadAll(dir_ / "explore" / "map.yaml"));
-  EXPECT_EQ(ReadAll(dir_ / "map" / "map_colours.png"),
-            ReadAll(dir_ / "explore" / "map_colours.png"));
+  EXPECT_EQ(Read("map", "map.pgm"), Read("explore", "map.pgm"));
+  EXPECT_EQ(Read("map", "map.yaml"), Read("explore", "map.yaml"));
+  EXPECT_EQ(Read("map", "map_colours.png"), Read("explore", "map_colours.png"));
 
   // Mapped again without tracking, the same frames make another map.
-  map.out_dir = (dir_ / "untracked").string();
+  map.out_dir = Path("untracked");
   map.localize = "none";
   RunMapLog(map);
-  EXPECT_NE(ReadAll(dir_ / "untracked" / "map.pgm"), ReadAll(dir_ / "explore" / "map.pgm"));
+  EXPECT_NE(Read("untracked", "map.pgm"), Read("explore", "map.pgm"));
 }
 
 }  // namespace

@@ -3,46 +3,28 @@
 // the file for bad input (SPEC.md, "Commands").
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
+#include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "pirouette/testing/temp_dir.h"
 #include "run_pirouette.h"
 
 namespace {
 
-namespace fs = std::filesystem;
-
 using pirouette::testing::RunPirouette;
 using Result = pirouette::testing::RunResult;
 
-std::size_t Count(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 class SegmentCliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pirouette_segment_cli_test_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string Path(const std::string& name) const { return dir_ / name; }
   static std::string World(const std::string& name) {
     return std::string(PIROUETTE_WORLDS_DIR) + "/" + name;
   }
 
-  fs::path dir_;
+  pirouette::testing::TempDir dir_{"pirouette_segment_cli_test"};
 };
 
 TEST_F(SegmentCliTest, RenderedFrameGivesMaskOverlayAndProfile) {
@@ -60,8 +42,12 @@ TEST_F(SegmentCliTest, RenderedFrameGivesMaskOverlayAndProfile) {
     args += " --out " + Path("overlay.png");
     const Result r = RunPirouette(args);
     ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
-    EXPECT_NE(r.stdout_only.find("\"max_range_m\""), std::string::npos);
-    EXPECT_EQ(Count(r.stdout_only, "\"bearing_deg\""), 320u);  // one reading per column
+    const nlohmann::json profile = nlohmann::json::parse(r.stdout_only);
+    EXPECT_TRUE(profile.contains("max_range_m")) << r.stdout_only;
+    ASSERT_EQ(profile.at("readings").size(), 320u);  // one reading per column
+    for (const nlohmann::json& reading : profile.at("readings")) {
+      EXPECT_TRUE(reading.contains("bearing_deg")) << reading;
+    }
     const cv::Mat mask = cv::imread(Path("mask.png"), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(mask.type(), CV_8UC1);
     EXPECT_EQ(mask.cols, 320);
@@ -89,7 +75,7 @@ TEST_F(SegmentCliTest, MissingImageIsBadInput) {
 }
 
 TEST_F(SegmentCliTest, EmptyFileIsBadInput) {
-  std::ofstream(Path("empty.png")).flush();
+  dir_.Write("empty.png", "");
   const Result r = RunPirouette("segment --image " + Path("empty.png"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_only.find("empty.png"), std::string::npos) << r.stderr_only;
@@ -112,7 +98,7 @@ TEST_F(SegmentCliTest, UnknownMethodIsBadInput) {
 }
 
 TEST_F(SegmentCliTest, EvalOfAFolderWithoutPhotosIsBadInput) {
-  const Result r = RunPirouette("segment-eval --images " + dir_.string() + " --last 0");
+  const Result r = RunPirouette("segment-eval --images " + dir_.path().string() + " --last 0");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.stderr_only.find("source_0.bmp"), std::string::npos) << r.stderr_only;
 }

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/tools/calibrate.h"
 
 namespace pirouette::cli {
@@ -14,9 +15,17 @@ void Print(const tools::CalibrationReport& report) {
   std::fputs(report.json.c_str(), stdout);
 }
 
-constexpr const char* kBoardHelp =
-    "COLSxROWS: the board's inner corners (where four squares meet), as OpenCV counts them: "
-    "a board of 10 x 7 squares is 9x6";
+// --board and --square, both required: the printed chessboard of intrinsics and mount.
+void AddBoardOptions(CLI::App* app, std::string& board, double& square_m) {
+  app->add_option("--board", board,
+                  "COLSxROWS: the board's inner corners (where four squares meet), as OpenCV "
+                  "counts them: a board of 10 x 7 squares is 9x6")
+      ->required();
+  app->add_option("--square", square_m, "side of one printed square, metres (measure it)")
+      ->required();
+}
+
+constexpr const char* kUpdatedCamera = "the one to update";
 
 }  // namespace
 
@@ -45,10 +54,7 @@ Command AddCalibrateCommand(CLI::App& parent) {
                  "folder of photos of the board (png, jpg, jpeg, bmp, tif, tiff), all from the "
                  "camera at the resolution the robot will use")
       ->required();
-  in->add_option("--board", intrinsics->board, kBoardHelp)->required();
-  in->add_option("--square", intrinsics->square_m,
-                 "side of one printed square, metres (measure it)")
-      ->required();
+  AddBoardOptions(in, intrinsics->board, intrinsics->square_m);
   in->add_option("--out", intrinsics->out_path, "the camera file to write (YAML)")->required();
   in->add_option("--name", intrinsics->camera_name,
                  "camera_name of a new camera file (an existing file keeps its own)")
@@ -67,9 +73,8 @@ Command AddCalibrateCommand(CLI::App& parent) {
       "wall), not over-exposed, and write vignetting.k into the camera file. Run it after "
       "`calibrate intrinsics` (it uses the principal point).\n  example: pirouette calibrate "
       "vignetting --image flat.png --camera camera.yaml");
-  vg->add_option("--image", vignetting->image_path, "the photo of the uniform surface")->required();
-  vg->add_option("--camera", vignetting->camera_path, "the camera file to update (YAML)")
-      ->required();
+  AddImageOption(vg, vignetting->image_path, "of the uniform surface")->required();
+  AddCameraOption(vg, vignetting->camera_path, kUpdatedCamera)->required();
 
   auto mount = std::make_shared<tools::MountCalibrationRequest>();
   CLI::App* mt = cmd->add_subcommand(
@@ -81,9 +86,9 @@ Command AddCalibrateCommand(CLI::App& parent) {
       "mount; its roll is reported. Run it after `calibrate intrinsics`.\n  example: pirouette "
       "calibrate mount --image board.png --board 9x6 --square 0.025 --board-distance 0.30 "
       "--camera camera.yaml");
-  mt->add_option("--image", mount->image_path, "the photo from the robot's camera")->required();
-  mt->add_option("--board", mount->board, kBoardHelp)->required();
-  mt->add_option("--square", mount->square_m, "side of one printed square, metres")->required();
+  AddImageOption(mt, mount->image_path, "from the robot's camera, of the board on the floor")
+      ->required();
+  AddBoardOptions(mt, mount->board, mount->square_m);
   mt->add_option("--board-distance", mount->board_distance_m,
                  "metres, measured on the floor along the robot's forward axis, from the robot's "
                  "centre of rotation (the point it spins about: the middle of the drive wheels' "
@@ -92,7 +97,7 @@ Command AddCalibrateCommand(CLI::App& parent) {
   mt->add_option("--board-thickness", mount->board_thickness_m,
                  "metres: how far the printed face stands above the floor (0 for paper)")
       ->capture_default_str();
-  mt->add_option("--camera", mount->camera_path, "the camera file to update (YAML)")->required();
+  AddCameraOption(mt, mount->camera_path, kUpdatedCamera)->required();
 
   return {cmd, [in, vg, mt, intrinsics, vignetting, mount] {
             if (in->parsed()) Print(tools::CalibrateIntrinsics(*intrinsics));

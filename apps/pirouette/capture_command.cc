@@ -9,6 +9,7 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/run/progress_line.h"
 #include "pirouette/tools/capture.h"
 
@@ -33,7 +34,6 @@ Command AddCaptureCommand(CLI::App& parent) {
   auto request = std::make_shared<tools::LiveCaptureRequest>();
   auto method = std::make_shared<std::string>("default");
   auto frames = std::make_shared<int>(0);
-  auto max_range = std::make_shared<double>(0.0);
   auto quiet = std::make_shared<bool>(false);
   CLI::App* cmd = parent.add_subcommand(
       "capture",
@@ -52,13 +52,10 @@ Command AddCaptureCommand(CLI::App& parent) {
                   "a camera device number (0, 1, ...), a video file, or a stream URL "
                   "(rtsp://..., http://...)")
       ->required();
-  cmd->add_option("--camera", request->camera_path,
-                  "camera file (ROS camera_info YAML + mount); its size must be the frames'. "
-                  "Without it: no correction and no profile");
-  cmd->add_option("--method", *method, "floor segmentation: paper | default")
-      ->check(CLI::IsMember({"default", "paper"}))
-      ->capture_default_str();
-  cmd->add_option("--out", request->out_dir, "output folder")->capture_default_str();
+  AddCameraOption(cmd, request->camera_path,
+                  "its size must be the frames'; without it: no correction and no profile");
+  AddMethodOption(cmd, *method, kSegmentationMethods);
+  AddOutFolderOption(cmd, request->out_dir);
   CLI::Option* frames_option =
       cmd->add_option("--frames", *frames,
                       "stop after this many frames used; 0: no limit (default: all of a file, " +
@@ -66,15 +63,11 @@ Command AddCaptureCommand(CLI::App& parent) {
   cmd->add_option("--every", request->every,
                   "use every k-th frame of the source; the others are skipped unseen")
       ->capture_default_str();
-  CLI::Option* max_range_option =
-      cmd->add_option("--max-range", *max_range,
-                      "the profile's maximum range, metres (default: the camera's, for 1 cm "
-                      "cells)");
-  cmd->add_flag("--quiet", *quiet, "no progress on standard error");
-  return {cmd, [request, method, frames, frames_option, max_range, max_range_option, quiet] {
+  AddMaxRangeOption(cmd, request->max_range_m, "the camera's, by the paper's rule for 1 cm cells");
+  AddQuietOption(cmd, *quiet);
+  return {cmd, [request, method, frames, frames_option, quiet] {
             request->method = *vision::ParseSegmentationMethod(*method);
             if (frames_option->count() > 0) request->max_frames = *frames;
-            if (max_range_option->count() > 0) request->max_range_m = *max_range;
             // OpenCV's backends log every one they try and fail on a source that
             // does not open; the message below says what failed. Set
             // OPENCV_LOG_LEVEL (e.g. INFO) to see them.

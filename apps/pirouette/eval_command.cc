@@ -3,6 +3,7 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/eval/map_evaluation.h"
 #include "pirouette/io/map_file.h"
 #include "pirouette/io/world_file.h"
@@ -19,7 +20,7 @@ Command AddEvalCommand(CLI::App& parent) {
       "map marks free), false_free, false_occupied (occupied cells more than 2 cells from any "
       "true obstacle), wall_error_m and the map's cell counts.\n  example: pirouette eval "
       "--world worlds/soccer_field.yaml --map out/map.yaml");
-  cmd->add_option("--world", *world_path, "world file (pirouette-world/1 YAML)")->required();
+  AddWorldOption(cmd, *world_path)->required();
   cmd->add_option("--map", *map_path, "map file (map_server YAML, e.g. out/map.yaml)")->required();
   return {cmd, [world_path, map_path] {
             const sim::World world = io::LoadWorldFile(*world_path);

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/core/input_error.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/tools/explore_eval.h"
 
 namespace pirouette::cli {
@@ -15,21 +15,18 @@ Command AddExploreEvalCommand(CLI::App& parent) {
       std::make_shared<std::vector<std::string>>(std::vector<std::string>{"dt", "frontier"});
   CLI::App* cmd = parent.add_subcommand(
       "explore-eval",
-      "Explore worlds with several seeds and both planners and print the Markdown table of the "
-      "README (completion, coverage, false free/occupied, wall error, path length and stops; "
+      "Explore worlds with several seeds and both planners and print a Markdown table "
+      "(docs/measurements.md, \"Exploration maps\": completion, coverage, false free/occupied, "
+      "wall error, path length and stops; "
       "the distance transform's path against the frontier baseline's). Progress on standard "
       "error, the table on standard output.\n  example: pirouette explore-eval --world "
       "worlds/soccer_field.yaml --world worlds/maze.yaml --seeds 1,2,3,4,5");
-  cmd->add_option("--world", request->world_paths, "world files (repeat the option)")->required();
+  AddWorldsOption(cmd, request->world_paths)->required();
   cmd->add_option("--seeds", request->seeds, "seeds, comma separated")
       ->delimiter(',')
       ->capture_default_str();
-  cmd->add_option("--planner", *planners, "planners, comma separated: dt, frontier")
-      ->delimiter(',')
-      ->check(CLI::IsMember({"dt", "frontier"}))
-      ->capture_default_str();
-  cmd->add_option("--max-steps", request->options.max_steps, "straight moves allowed a run")
-      ->capture_default_str();
+  AddPlannersOption(cmd, *planners);
+  AddMaxStepsOption(cmd, request->options.max_steps);
   return {
       cmd, [request, planners] {
         request->planners.clear();

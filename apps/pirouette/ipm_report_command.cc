@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/tools/ipm_report.h"
 
 namespace pirouette::cli {
@@ -13,9 +14,8 @@ Command AddIpmReportCommand(CLI::App& parent) {
       "Print how far 1 pixel of floor-edge error moves the floor point, by range, for a camera, "
       "and the maximum range where it stays under half a map cell (the paper's rule).\n  "
       "example: pirouette ipm-report --camera worlds/yujin.yaml");
-  cmd->add_option("--camera", request->camera_path, "camera file (ROS camera_info YAML)")
-      ->required();
-  cmd->add_option("--cell", request->cell_m, "map cell size, metres")->capture_default_str();
+  AddCameraOption(cmd, request->camera_path)->required();
+  AddCellOption(cmd, request->cell_m);
   cmd->add_option("--step", request->step_m, "the table's range step, metres")
       ->capture_default_str();
   cmd->add_flag("--json", request->json, "print JSON instead of a table");

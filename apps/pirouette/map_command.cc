@@ -2,6 +2,7 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/run/log_replay.h"
 
 namespace pirouette::cli {
@@ -21,22 +22,15 @@ Command AddMapCommand(CLI::App& parent) {
       "  example: pirouette explore --world worlds/soccer_field.yaml --record run1 && "
       "pirouette map --log run1 --out map1");
   cmd->add_option("--log", request->log_dir, "the run log's folder")->required();
-  cmd->add_option("--out", request->out_dir, "output folder")->capture_default_str();
-  cmd->add_option("--world", request->world_path,
-                  "world file to evaluate the map against (default: the log's, if it exists)");
-  cmd->add_option("--radius", request->radius_m,
-                  "the robot's radius, metres (default: the log's robot.radius)");
-  cmd->add_option("--cell", request->cell_m, "map cell, metres (default: the log's)");
-  cmd->add_option("--max-range", request->max_range_m,
-                  "trust readings out to this range, metres (default: the log's, else the "
-                  "paper's rule)");
-  cmd->add_option("--method", request->method,
-                  "floor segmentation: default or paper (default: the log's)")
-      ->check(CLI::IsMember({"default", "paper"}));
-  cmd->add_option("--localize", request->localize,
-                  "pose tracking: scan or none (default: the log's, else none)")
-      ->check(CLI::IsMember({"scan", "none"}));
-  cmd->add_flag("--quiet", request->quiet, "no progress on standard error");
+  AddOutFolderOption(cmd, request->out_dir);
+  AddWorldOption(cmd, request->world_path,
+                 "the map is evaluated against it (default: the log's world, if it exists)");
+  AddRadiusOption(cmd, request->radius_m, "the log's robot.radius");
+  AddCellOption(cmd, request->cell_m, "the log's");
+  AddMaxRangeOption(cmd, request->max_range_m, "the log's, else the paper's rule");
+  AddMethodOption(cmd, request->method, kSegmentationMethods, "the log's");
+  AddLocalizeOption(cmd, request->localize, "the log's, else none");
+  AddQuietOption(cmd, request->quiet);
   return {cmd, [request] {
             const run::MapLogReport report = run::RunMapLog(*request);
             if (!request->quiet) {

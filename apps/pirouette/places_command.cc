@@ -4,7 +4,7 @@
 #include <string>
 
 #include "apps/pirouette/command.h"
-#include "pirouette/core/input_error.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/tools/places.h"
 
@@ -27,37 +27,25 @@ Command AddPlacesCommand(CLI::App& parent) {
       "standard error, the table on standard output.\n  example: pirouette places --world "
       "worlds/soccer_field.yaml --queries 100 --seed 1 --table soccer_places.yaml --out "
       "places.json");
-  cmd->add_option("--world", request->world_path, "world file (pirouette-world/1 YAML)")
-      ->required();
+  AddWorldOption(cmd, request->world_path)->required();
   cmd->add_option("--queries", request->queries, "random poses to query")->capture_default_str();
-  cmd->add_option("--seed", request->seed, "seeds the query poses and the noise")
-      ->capture_default_str();
-  cmd->add_option("--table", request->table_path,
-                  "place table file (pirouette-places/1 YAML): loaded if it exists, else built "
-                  "and written there");
+  AddSeedOption(cmd, request->seed, "the random poses and the simulator's noise");
+  AddPlaceTableOption(cmd, request->table_path,
+                      "loaded if it exists, else built and written there");
   CLI::Option* spacing_option = cmd->add_option(
       "--spacing", *spacing,
       "the table grid's spacing, metres (default: the coarse cell, at least 4 robot radii)");
-  cmd->add_option("--method", *method, "floor segmentation: paper | default | truth")
-      ->capture_default_str();
-  cmd->add_option("--range-factor", request->range_factor,
-                  "read the pirouettes out to this many times the map's range, but no farther "
-                  "than every image column sees the floor")
-      ->capture_default_str();
-  cmd->add_option("--out", *out, "write the JSON report here (atomically)");
+  AddMethodOption(cmd, *method, kMaskSources);
+  AddRangeFactorOption(cmd, request->range_factor);
+  AddReportOption(cmd, *out);
   auto no_refine = std::make_shared<bool>(false);
   cmd->add_flag("--no-refine", *no_refine,
                 "judge the heading-giving signatures' matched places as they are, without "
                 "refining the position and heading by aligning the two profiles");
-  cmd->add_flag("--quiet", request->quiet, "no progress line");
+  AddQuietOption(cmd, request->quiet);
   return {cmd, [request, method, spacing, spacing_option, out, no_refine] {
             request->refine = !*no_refine;
-            const auto parsed = vision::ParseMaskSource(*method);
-            if (!parsed) {
-              throw core::InputError("", 0, "--method",
-                                     "'" + *method + "' is not a method (paper | default | truth)");
-            }
-            request->method = *parsed;
+            request->method = *vision::ParseMaskSource(*method);
             if (spacing_option->count() > 0) request->spacing_m = *spacing;
             const tools::PlacesResult result = tools::MeasurePlaces(*request);
             std::printf(

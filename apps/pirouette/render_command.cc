@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/options.h"
 #include "apps/pirouette/parse.h"
 #include "pirouette/tools/render_view.h"
 
@@ -15,12 +16,10 @@ Command AddRenderCommand(CLI::App& parent) {
       "Write what the robot's camera sees at a pose, with its lens distortion, vignetting and "
       "noise, as a PNG.\n  example: pirouette render --world worlds/soccer_field.yaml "
       "--pose 0.2,0.2,45 --out view.png");
-  cmd->add_option("--world", request->world_path, "world file (pirouette-world/1 YAML)")
-      ->required();
-  cmd->add_option("--pose", *pose, "X,Y,HEADING: metres, metres, degrees counter-clockwise from +x")
-      ->required();
-  cmd->add_option("--out", request->out_path, "the PNG to write")->required();
-  cmd->add_option("--seed", request->seed, "seeds the sensor noise")->capture_default_str();
+  AddWorldOption(cmd, request->world_path)->required();
+  AddPoseOption(cmd, *pose, "where the robot stands")->required();
+  AddOutPngOption(cmd, request->out_path, "the camera's view")->required();
+  AddSeedOption(cmd, request->seed, "the simulator's camera noise");
   return {cmd, [request, pose] {
             request->world_T_robot = ParsePose(*pose, "--pose");
             tools::RenderView(*request);

@@ -2,8 +2,10 @@
 #include <memory>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/eval/segmentation_eval.h"
+#include "pirouette/tools/segment_eval.h"
 
 namespace pirouette::cli {
 
@@ -20,34 +22,28 @@ Command AddSegmentEvalCommand(CLI::App& parent) {
       "pirouette segment-eval --world worlds/apartment.yaml --stops 3");
   CLI::Option* images =
       cmd->add_option("--images", request->images_dir, "the folder of photos and masks");
-  CLI::Option* world = cmd->add_option("--world", sim_request->world_path,
-                                       "a world file: measure on simulated frames instead");
+  CLI::Option* world =
+      AddWorldOption(cmd, sim_request->world_path, "measure on its simulated frames instead");
   images->excludes(world);
   cmd->add_option("--stops", sim_request->stops,
                   "with --world: pirouettes at this many poses besides the start")
       ->capture_default_str();
   cmd->add_option("--frames-dir", sim_request->frames_dir,
                   "with --world: write each frame's overlay and true mask to this folder");
-  cmd->add_option("--seed", sim_request->seed, "with --world: seeds the poses and the noise")
-      ->capture_default_str();
-  cmd->add_option("--method", *method, "paper | default")->capture_default_str();
+  AddSeedOption(cmd, sim_request->seed, "the random poses and the simulator's noise, with --world");
+  AddMethodOption(cmd, *method, kSegmentationMethods);
   cmd->add_option("--first", request->first, "the first photo's number")->capture_default_str();
   cmd->add_option("--last", request->last, "the last photo's number")->capture_default_str();
   return {cmd, [request, method, sim_request, images, world] {
-            const auto parsed = vision::ParseSegmentationMethod(*method);
-            if (!parsed) {
-              throw core::InputError("", 0, "--method",
-                                     "'" + *method + "' is not a method (paper | default)");
-            }
-            request->method = *parsed;
-            const std::string name(vision::SegmentationMethodName(*parsed));
+            request->method = *vision::ParseSegmentationMethod(*method);
+            const std::string name(vision::SegmentationMethodName(request->method));
             if (world->count() > 0) {
-              sim_request->method = *parsed;
+              sim_request->method = request->method;
               const eval::SegmentationEvalResult result =
                   eval::EvaluateSimulatedSegmentation(*sim_request);
               request->first = 0;
               request->last = static_cast<int>(result.images.size()) - 1;
-              std::fputs(eval::SegmentationEvalJson(*request, result).c_str(), stdout);
+              std::fputs(tools::SegmentationEvalJson(*request, result).c_str(), stdout);
               std::fprintf(stderr,
                            "%s, %s, %zu frames: mean IoU %.4f, boundary row error median %.0f "
                            "px, p95 %.0f px\n",
@@ -60,7 +56,7 @@ Command AddSegmentEvalCommand(CLI::App& parent) {
               throw core::InputError("", 0, "--images", "give --images DIR or --world FILE");
             }
             const eval::SegmentationEvalResult result = eval::EvaluateSegmentation(*request);
-            std::fputs(eval::SegmentationEvalJson(*request, result).c_str(), stdout);
+            std::fputs(tools::SegmentationEvalJson(*request, result).c_str(), stdout);
             std::fprintf(stderr, "%s, photos %d-%d: mean IoU %.4f\n", name.c_str(), request->first,
                          request->last, result.mean_iou);
           }};

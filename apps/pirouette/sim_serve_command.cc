@@ -9,6 +9,7 @@
 
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
+#include "apps/pirouette/options.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/world_file.h"
 #include "pirouette/robot/robot_error.h"
@@ -70,7 +71,7 @@ Command AddSimServeCommand(CLI::App& parent) {
       "(docs/robot-protocol.md), one client at a time, until Ctrl-C: what `explore --robot "
       "tcp://HOST:PORT` drives, and what a real robot's adapter imitates.\n"
       "  example: pirouette sim-serve --world worlds/soccer_field.yaml --port 5555");
-  cmd->add_option("--world", request->world_path, "world file (pirouette-world/1)")->required();
+  AddWorldOption(cmd, request->world_path)->required();
   cmd->add_option("--port", request->port, "TCP port to listen on; 0: any free port")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
@@ -78,17 +79,8 @@ Command AddSimServeCommand(CLI::App& parent) {
                   "address to listen on (0.0.0.0: every interface; the protocol has no "
                   "authentication)")
       ->capture_default_str();
-  cmd->add_option("--seed", request->seed, "seed of the simulator's noise (camera and odometry)")
-      ->capture_default_str();
-  cmd->add_option("--odometry-noise", request->odometry_noise,
-                  "T,R: the motion error's standard deviations (as explore's; default: the "
-                  "world file's)")
-      ->delimiter(',')
-      ->expected(2);
-  cmd->add_option("--odometry-bias", request->odometry_bias,
-                  "T,R: the motion error's biases (as explore's; default: the world file's)")
-      ->delimiter(',')
-      ->expected(2);
+  AddSeedOption(cmd, request->seed, "the simulator's noise (camera and odometry)");
+  AddOdometryOptions(cmd, request->odometry_noise, request->odometry_bias);
   cmd->add_option("--port-file", request->port_file,
                   "once listening, write the port to this file (atomically), for scripts");
   return {cmd, [request] {

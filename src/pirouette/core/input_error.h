@@ -26,7 +26,7 @@ class InputError : public std::runtime_error {
                             const std::string& problem) {
     std::string out = file;
     if (line > 0) out += ":" + std::to_string(line);
-    out += ": ";
+    if (!out.empty()) out += ": ";
     if (!field.empty()) out += "field '" + field + "': ";
     out += problem;
     return out;

@@ -1,7 +1,5 @@
 #include "pirouette/eval/perception_eval.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,22 +19,9 @@
 namespace pirouette::eval {
 namespace {
 
-constexpr std::array<const char*, 3> kKindNames = {"hit", "clear", "blind"};
-
 // A true hit whose floor point is farther than this from every obstacle ends
 // the floor at an obstacle's silhouette, not at its base.
 constexpr double kSilhouetteGap = 0.001;
-
-// The q-quantile (0..1) by the nearest rank; 0 for none.
-double Quantile(std::vector<double> values, double q) {
-  if (values.empty()) return 0.0;
-  const auto rank =
-      static_cast<std::size_t>(std::clamp(std::ceil(q * static_cast<double>(values.size())) - 1.0,
-                                          0.0, static_cast<double>(values.size() - 1)));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(rank),
-                   values.end());
-  return values[rank];
-}
 
 // A pose where the robot's disc fits, uniformly over the floor and headings.
 core::Pose2 RandomPose(const sim::World& world, std::mt19937_64& rng) {
@@ -49,26 +34,6 @@ core::Pose2 RandomPose(const sim::World& world, std::mt19937_64& rng) {
     if (world.DiscFits(p, world.robot().radius)) return {p.x(), p.y(), h};
   }
   return world.robot().start;
-}
-
-std::string ComparisonJson(const ProfileComparison& c, const std::string& indent) {
-  std::string out = fmt::format("{}\"columns\": {},\n", indent, c.columns());
-  std::vector<double> absolute;
-  absolute.reserve(c.range_errors_m.size());
-  for (const double e : c.range_errors_m) absolute.push_back(std::abs(e));
-  out += fmt::format(
-      "{}\"range_error_m\": {{\"compared\": {}, \"median\": {:.5f}, \"p95\": {:.5f}, \"max\": "
-      "{:.5f}, \"median_signed\": {:.5f}}},\n",
-      indent, absolute.size(), Quantile(absolute, 0.5), Quantile(absolute, 0.95),
-      Quantile(absolute, 1.0), Quantile(c.range_errors_m, 0.5));
-  out += fmt::format("{}\"wrong_class_rate\": {:.5f},\n", indent, c.WrongClassRate());
-  out += fmt::format("{}\"confusion_truth_to_measured\": {{", indent);
-  for (std::size_t t = 0; t < 3; ++t) {
-    out += fmt::format(R"({}"{}": {{"hit": {}, "clear": {}, "blind": {}}})", t == 0 ? "" : ", ",
-                       kKindNames[t], c.confusion[t][0], c.confusion[t][1], c.confusion[t][2]);
-  }
-  out += "}";
-  return out;
 }
 
 }  // namespace
@@ -165,30 +130,6 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
     results.push_back(std::move(result));
   }
   return results;
-}
-
-std::string PerceptionEvalJson(const PerceptionEvalRequest& request,
-                               const std::vector<WorldPerception>& worlds) {
-  std::string out = fmt::format(
-      "{{\n  \"method\": \"{}\",\n  \"poses_per_world\": {},\n  \"seed\": {},\n  \"worlds\": [",
-      vision::MaskSourceName(request.method), request.poses, request.seed);
-  ProfileComparison all;
-  int frames = 0;
-  for (std::size_t i = 0; i < worlds.size(); ++i) {
-    const WorldPerception& w = worlds[i];
-    out += fmt::format(
-        "{}\n    {{\n      \"world\": \"{}\",\n      \"name\": \"{}\",\n      \"camera\": \"{}\",\n"
-        "      \"max_range_m\": {:.4f},\n      \"frames\": {},\n      \"seconds_per_frame\": "
-        "{:.4f},\n      \"true_hits\": {},\n      \"true_hits_at_silhouettes\": {},\n",
-        i == 0 ? "" : ",", w.world_path, w.world_name, w.camera_name, w.max_range_m, w.frames,
-        w.seconds_per_frame, w.true_hits, w.silhouette_hits);
-    out += ComparisonJson(w.comparison, "      ") + "\n    }";
-    all.Add(w.comparison);
-    frames += w.frames;
-  }
-  out += fmt::format("\n  ],\n  \"all\": {{\n    \"frames\": {},\n", frames);
-  out += ComparisonJson(all, "    ") + "\n  }\n}\n";
-  return out;
 }
 
 }  // namespace pirouette::eval

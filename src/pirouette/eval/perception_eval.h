@@ -57,12 +57,4 @@ struct WorldPerception {
 // file or option, sim::RenderError when it cannot render.
 std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& request);
 
-// The evaluation as JSON: per world and over all of them, the median, 95th
-// percentile and largest absolute range error of columns that are hits both
-// in truth and as measured, the median signed error (> 0: read too far), the
-// rate of wrong classes, the confusion counts (truth → measured), and how
-// many true hits end the floor at a silhouette.
-std::string PerceptionEvalJson(const PerceptionEvalRequest& request,
-                               const std::vector<WorldPerception>& worlds);
-
 }  // namespace pirouette::eval

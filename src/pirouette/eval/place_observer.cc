@@ -16,6 +16,15 @@
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::eval {
+namespace {
+
+// The noise of the table's pirouette at place i is seeded kTableSeedBase + i:
+// fixed (a table is the same whatever the run's seed) and apart from the
+// seeds of queries (tools::QuerySeed) for tables of up to a few thousand
+// places.
+constexpr std::uint64_t kTableSeedBase = 1000;
+
+}  // namespace
 
 struct PlaceObserver::Impl {
   Impl(const sim::World& world, vision::MaskSource method, double max_range_m,
@@ -110,7 +119,7 @@ localize::PlaceTable BuildPlaceTable(const sim::World& world, PlaceObserver& obs
   std::vector<localize::PlaceEntry> entries;
   for (std::size_t i = 0; i < where.size(); ++i) {
     const localize::ObservedPlace seen =
-        observer.Observe(core::Pose2(where[i].x(), where[i].y(), 0.0), 1000 + i);
+        observer.Observe(core::Pose2(where[i].x(), where[i].y(), 0.0), kTableSeedBase + i);
     entries.push_back({where[i].x(), where[i].y(), 0.0, seen.view, seen.kinds});
     if (progress) progress(static_cast<int>(i + 1), static_cast<int>(where.size()));
   }

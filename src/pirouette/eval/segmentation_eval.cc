@@ -70,30 +70,6 @@ SegmentationEvalResult EvaluateSegmentation(const SegmentationEvalRequest& reque
   return result;
 }
 
-std::string SegmentationEvalJson(const SegmentationEvalRequest& request,
-                                 const SegmentationEvalResult& result) {
-  std::string out = fmt::format(
-      "{{\n  \"method\": \"{}\",\n  \"first\": {},\n  \"last\": {},\n  \"mean_iou\": {:.4f},\n",
-      vision::SegmentationMethodName(request.method), request.first, request.last, result.mean_iou);
-  if (result.boundary_error_median_px && result.boundary_error_p95_px) {
-    out += fmt::format(
-        "  \"boundary_error_median_px\": {:.1f},\n  \"boundary_error_p95_px\": {:.1f},\n",
-        *result.boundary_error_median_px, *result.boundary_error_p95_px);
-  }
-  if (result.boundary_bias_median_px) {
-    out += fmt::format("  \"boundary_bias_median_px\": {:.1f},\n", *result.boundary_bias_median_px);
-  }
-  out += "  \"images\": [";
-  for (std::size_t i = 0; i < result.images.size(); ++i) {
-    const ImageScore& s = result.images[i];
-    out += fmt::format(
-        "{}\n    {{\"index\": {}, \"iou\": {:.4f}, \"precision\": {:.4f}, \"recall\": {:.4f}}}",
-        i == 0 ? "" : ",", s.index, s.iou, s.precision, s.recall);
-  }
-  out += "\n  ]\n}\n";
-  return out;
-}
-
 namespace {
 
 // The row of the first pixel that is not floor, walking up column u from the bottom; -1 if none.

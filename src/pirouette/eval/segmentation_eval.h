@@ -47,9 +47,6 @@ SegmentationEvalResult EvaluateSegmentation(const SegmentationEvalRequest& reque
 // The scores of a floor mask against a truth mask of the same size (both non-zero = floor).
 ImageScore ScoreMask(const cv::Mat1b& truth, const cv::Mat1b& floor_mask);
 
-std::string SegmentationEvalJson(const SegmentationEvalRequest& request,
-                                 const SegmentationEvalResult& result);
-
 // Floor segmentation measured on simulated frames against the ray caster's
 // true floor mask: the robot makes a pirouette (12 turns of 30°) at its start
 // pose and at `stops` more poses drawn from `seed` where its disc fits, and one

@@ -6,48 +6,28 @@
 #include <stdexcept>
 
 #include "pirouette/explore/planner.h"
+#include "pirouette/testing/test_grids.h"
 
 namespace pirouette::explore {
 namespace {
 
 using mapping::CellState;
 
-// A room of w × h cells of 1 cm with a wall all round, free inside.
-mapping::TrinaryMap Room(int w, int h) {
-  mapping::TrinaryMap map{core::GridGeometry(0.01, {0.0, 0.0}, w, h),
-                          std::vector<CellState>(static_cast<std::size_t>(w) * h)};
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const bool wall = x == 0 || y == 0 || x == w - 1 || y == h - 1;
-      map.cells[map.geometry.Flat({x, y})] = wall ? CellState::kOccupied : CellState::kFree;
-    }
-  }
-  return map;
-}
+using testing::FillCells;
+using testing::WalledMap;
 
-void Fill(mapping::TrinaryMap& map, int x0, int y0, int x1, int y1, CellState state) {
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) map.cells[map.geometry.Flat({x, y})] = state;
-  }
-}
-
-PlannerOptions Options() {
-  PlannerOptions options;
-  options.robot_radius_m = 0.02;
-  options.coarse_factor = 2;
-  return options;
-}
+using testing::TwoCellRobot;
 
 // Known floor for x < 25, unknown beyond (frontier A: the column x = 25, 28
 // cells); a 2 × 2 unknown pocket at (3..4, 20..21) (frontier B, 4 cells); and
 // a walled closet with an unknown cell the robot cannot reach.
 mapping::TrinaryMap TwoFrontiers(int unknown_from = 25) {
-  mapping::TrinaryMap map = Room(40, 30);
-  Fill(map, unknown_from, 1, 38, 28, CellState::kUnknown);
-  Fill(map, 3, 20, 4, 21, CellState::kUnknown);
-  Fill(map, 10, 22, 16, 28, CellState::kOccupied);
-  Fill(map, 11, 23, 15, 27, CellState::kFree);
-  Fill(map, 13, 25, 13, 25, CellState::kUnknown);
+  mapping::TrinaryMap map = WalledMap(40, 30);
+  FillCells(map, unknown_from, 1, 38, 28, CellState::kUnknown);
+  FillCells(map, 3, 20, 4, 21, CellState::kUnknown);
+  FillCells(map, 10, 22, 16, 28, CellState::kOccupied);
+  FillCells(map, 11, 23, 15, 27, CellState::kFree);
+  FillCells(map, 13, 25, 13, 25, CellState::kUnknown);
   return map;
 }
 
@@ -94,10 +74,10 @@ TEST(FrontierSearchTest, SmallFrontiersAreDropped) {
 TEST(FrontierSearchTest, DiagonalCellsGroupAndARobotOffFreeSpaceStillSearches) {
   // Unknown along the top row and the right column meet at a corner: one
   // frontier, 8-connected. The robot stands on an unknown cell.
-  mapping::TrinaryMap map = Room(20, 20);
-  Fill(map, 1, 18, 18, 18, CellState::kUnknown);
-  Fill(map, 18, 1, 18, 18, CellState::kUnknown);
-  Fill(map, 5, 5, 5, 5, CellState::kUnknown);
+  mapping::TrinaryMap map = WalledMap(20, 20);
+  FillCells(map, 1, 18, 18, 18, CellState::kUnknown);
+  FillCells(map, 18, 1, 18, 18, CellState::kUnknown);
+  FillCells(map, 5, 5, 5, 5, CellState::kUnknown);
   const std::vector<Frontier> frontiers = FindFrontiers(map, {0.055, 0.055}, FrontierOptions{});
   ASSERT_EQ(frontiers.size(), 2U);
   // 17 + 17 (the corner cell has no free neighbour) and the cell under the robot.
@@ -106,13 +86,13 @@ TEST(FrontierSearchTest, DiagonalCellsGroupAndARobotOffFreeSpaceStillSearches) {
 }
 
 TEST(FrontierPlannerTest, HeadsForTheCheapestFrontierAndStopsBeforeTheUnknown) {
-  const auto planner = MakeFrontierPlanner(Options());
+  const auto planner = MakeFrontierPlanner(TwoCellRobot());
   const mapping::TrinaryMap map = TwoFrontiers();
   const std::optional<Plan> plan = planner->Next(map, core::Pose2(kRobot.x(), kRobot.y(), 0.0));
   ASSERT_TRUE(plan);
   EXPECT_NEAR(plan->goal_world.x(), 0.255, 1e-12);
   EXPECT_NEAR(plan->goal_world.y(), 0.15, 1e-12);
-  const CoarseGrid grid = PlanningGrid(map, Options());
+  const CoarseGrid grid = PlanningGrid(map, TwoCellRobot());
   EXPECT_EQ(plan->goal_cell, grid.geometry().CellOf(plan->goal_world));
   EXPECT_EQ(grid.At(plan->goal_cell), CoarseCell::kGoal);
   ASSERT_FALSE(plan->waypoints_world.empty());
@@ -126,13 +106,13 @@ TEST(FrontierPlannerTest, HeadsForTheCheapestFrontierAndStopsBeforeTheUnknown) {
 
 TEST(FrontierPlannerTest, DrivesIntoAFreeCentroid) {
   // An L-shaped frontier whose centroid lies in known free floor.
-  mapping::TrinaryMap map = Room(30, 30);
-  Fill(map, 1, 28, 28, 28, CellState::kUnknown);
-  Fill(map, 28, 1, 28, 28, CellState::kUnknown);
-  const auto planner = MakeFrontierPlanner(Options());
+  mapping::TrinaryMap map = WalledMap(30, 30);
+  FillCells(map, 1, 28, 28, 28, CellState::kUnknown);
+  FillCells(map, 28, 1, 28, 28, CellState::kUnknown);
+  const auto planner = MakeFrontierPlanner(TwoCellRobot());
   const std::optional<Plan> plan = planner->Next(map, core::Pose2(0.05, 0.05, 0.0));
   ASSERT_TRUE(plan);
-  const CoarseGrid grid = PlanningGrid(map, Options());
+  const CoarseGrid grid = PlanningGrid(map, TwoCellRobot());
   EXPECT_EQ(grid.At(plan->goal_cell), CoarseCell::kFree);
   ASSERT_FALSE(plan->waypoints_world.empty());
   EXPECT_EQ(plan->waypoints_world.back(), grid.geometry().CellCentre(plan->goal_cell));
@@ -142,18 +122,18 @@ TEST(FrontierPlannerTest, BlockedCentroidFallsBackToTheNearestCell) {
   // Unknown bands along the top and the right: one L-shaped frontier (the
   // row y = 24 and the column x = 24) whose centroid, (0.185, 0.185), is in
   // an obstacle.
-  mapping::TrinaryMap map = Room(30, 30);
-  Fill(map, 1, 24, 28, 28, CellState::kUnknown);
-  Fill(map, 24, 1, 28, 28, CellState::kUnknown);
-  Fill(map, 17, 17, 19, 19, CellState::kOccupied);
+  mapping::TrinaryMap map = WalledMap(30, 30);
+  FillCells(map, 1, 24, 28, 28, CellState::kUnknown);
+  FillCells(map, 24, 1, 28, 28, CellState::kUnknown);
+  FillCells(map, 17, 17, 19, 19, CellState::kOccupied);
   const Eigen::Vector2d robot(0.05, 0.05);
   const std::vector<Frontier> frontiers = FindFrontiers(map, robot, FrontierOptions{});
   ASSERT_EQ(frontiers.size(), 1U);
   EXPECT_NEAR(frontiers[0].centroid_world.x(), 0.185, 1e-12);
-  const CoarseGrid grid = PlanningGrid(map, Options());
+  const CoarseGrid grid = PlanningGrid(map, TwoCellRobot());
   ASSERT_EQ(grid.At(grid.geometry().CellOf(frontiers[0].centroid_world)), CoarseCell::kBlocked);
   const std::optional<Plan> plan =
-      MakeFrontierPlanner(Options())->Next(map, core::Pose2(robot.x(), robot.y(), 0.0));
+      MakeFrontierPlanner(TwoCellRobot())->Next(map, core::Pose2(robot.x(), robot.y(), 0.0));
   ASSERT_TRUE(plan);
   EXPECT_EQ(plan->goal_world, frontiers[0].nearest_world);
   EXPECT_EQ(plan->goal_cell, grid.geometry().CellOf(frontiers[0].nearest_world));
@@ -165,7 +145,7 @@ TEST(FrontierPlannerTest, BlacklistsGoalsReportedUnreachableWithinATolerance) {
   FrontierOptions options;
   options.min_frontier_size_m = 0.05;  // leaves frontier A only
   {
-    const auto planner = MakeFrontierPlanner(Options(), options);
+    const auto planner = MakeFrontierPlanner(TwoCellRobot(), options);
     const std::optional<Plan> plan = planner->Next(TwoFrontiers(), robot);
     ASSERT_TRUE(plan);
     planner->ReportUnreachable(*plan);
@@ -179,7 +159,7 @@ TEST(FrontierPlannerTest, BlacklistsGoalsReportedUnreachableWithinATolerance) {
   }
   {
     // Without the report, the same goal again.
-    const auto planner = MakeFrontierPlanner(Options(), options);
+    const auto planner = MakeFrontierPlanner(TwoCellRobot(), options);
     ASSERT_TRUE(planner->Next(TwoFrontiers(), robot));
     EXPECT_TRUE(planner->Next(TwoFrontiers(), robot));
   }
@@ -189,11 +169,11 @@ TEST(FrontierPlannerTest, FrontiersWithNoPathArePassedOver) {
   // Frontier A lies behind a wall with a gap of one map cell: the frontier
   // search finds it, the robot cannot get through. B is reachable.
   mapping::TrinaryMap map = TwoFrontiers();
-  Fill(map, 21, 1, 22, 14, CellState::kOccupied);
-  Fill(map, 21, 16, 22, 28, CellState::kOccupied);
+  FillCells(map, 21, 1, 22, 14, CellState::kOccupied);
+  FillCells(map, 21, 16, 22, 28, CellState::kOccupied);
   FrontierOptions options;
   options.min_frontier_size_m = 0.01;
-  const auto planner = MakeFrontierPlanner(Options(), options);
+  const auto planner = MakeFrontierPlanner(TwoCellRobot(), options);
   const std::optional<Plan> plan = planner->Next(map, core::Pose2(kRobot.x(), kRobot.y(), 0.0));
   ASSERT_TRUE(plan);
   EXPECT_NEAR(plan->goal_world.x(), 0.04, 1e-12);
@@ -201,9 +181,9 @@ TEST(FrontierPlannerTest, FrontiersWithNoPathArePassedOver) {
 
 TEST(FrontierPlannerTest, AGoalThatOutlastsAPirouetteThereIsGivenUp) {
   // The robot stands in the last free coarse cell before frontier B.
-  mapping::TrinaryMap map = Room(30, 30);
-  Fill(map, 20, 10, 27, 11, CellState::kUnknown);
-  const auto planner = MakeFrontierPlanner(Options(), FrontierOptions{});
+  mapping::TrinaryMap map = WalledMap(30, 30);
+  FillCells(map, 20, 10, 27, 11, CellState::kUnknown);
+  const auto planner = MakeFrontierPlanner(TwoCellRobot(), FrontierOptions{});
   const std::optional<Plan> first = planner->Next(map, core::Pose2(0.05, 0.05, 0.0));
   ASSERT_TRUE(first);
   ASSERT_FALSE(first->waypoints_world.empty());
@@ -218,10 +198,10 @@ TEST(FrontierPlannerTest, AGoalThatOutlastsAPirouetteThereIsGivenUp) {
 TEST(FrontierPlannerTest, RejectsBadOptions) {
   FrontierOptions bad;
   bad.potential_scale = -1.0;
-  EXPECT_THROW(MakeFrontierPlanner(Options(), bad), std::invalid_argument);
+  EXPECT_THROW(MakeFrontierPlanner(TwoCellRobot(), bad), std::invalid_argument);
   bad = FrontierOptions{};
   bad.blacklist_tolerance_cells = -2;
-  EXPECT_THROW(MakeFrontierPlanner(Options(), bad), std::invalid_argument);
+  EXPECT_THROW(MakeFrontierPlanner(TwoCellRobot(), bad), std::invalid_argument);
   EXPECT_THROW(MakeFrontierPlanner(PlannerOptions{}), std::invalid_argument);
 }
 

@@ -6,43 +6,22 @@
 
 #include "pirouette/explore/configuration_space.h"
 #include "pirouette/explore/moves.h"
+#include "pirouette/testing/test_grids.h"
 
 namespace pirouette::explore {
 namespace {
 
 using mapping::CellState;
 
-// A room of w × h cells of 1 cm with a wall all round, free inside.
-mapping::TrinaryMap Room(int w, int h) {
-  mapping::TrinaryMap map{core::GridGeometry(0.01, {0.0, 0.0}, w, h),
-                          std::vector<CellState>(static_cast<std::size_t>(w) * h)};
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      const bool wall = x == 0 || y == 0 || x == w - 1 || y == h - 1;
-      map.cells[map.geometry.Flat({x, y})] = wall ? CellState::kOccupied : CellState::kFree;
-    }
-  }
-  return map;
-}
+using testing::FillCells;
+using testing::WalledMap;
 
-// Sets the cells [x0, x1] × [y0, y1].
-void Fill(mapping::TrinaryMap& map, int x0, int y0, int x1, int y1, CellState state) {
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) map.cells[map.geometry.Flat({x, y})] = state;
-  }
-}
-
-PlannerOptions Options() {
-  PlannerOptions options;
-  options.robot_radius_m = 0.02;  // 2 cells
-  options.coarse_factor = 2;
-  return options;
-}
+using testing::TwoCellRobot;
 
 TEST(PlannerTest, LeadsStraightToTheNearestUnknownAndStopsBeforeIt) {
-  mapping::TrinaryMap map = Room(30, 20);
-  Fill(map, 20, 1, 28, 18, CellState::kUnknown);
-  const auto planner = MakeDistanceTransformPlanner(Options());
+  mapping::TrinaryMap map = WalledMap(30, 20);
+  FillCells(map, 20, 1, 28, 18, CellState::kUnknown);
+  const auto planner = MakeDistanceTransformPlanner(TwoCellRobot());
   const core::Pose2 robot(0.05, 0.10, 0.0);
   const std::optional<Plan> plan = planner->Next(map, robot);
   ASSERT_TRUE(plan);
@@ -65,10 +44,10 @@ TEST(PlannerTest, LeadsStraightToTheNearestUnknownAndStopsBeforeIt) {
 
 TEST(PlannerTest, WaypointsKeepToFreeCoarseCells) {
   // An L-shaped corridor: the plan turns the corner on free coarse cells.
-  mapping::TrinaryMap map = Room(40, 40);
-  Fill(map, 12, 1, 38, 26, CellState::kOccupied);
-  Fill(map, 30, 30, 38, 38, CellState::kUnknown);
-  const PlannerOptions options = Options();
+  mapping::TrinaryMap map = WalledMap(40, 40);
+  FillCells(map, 12, 1, 38, 26, CellState::kOccupied);
+  FillCells(map, 30, 30, 38, 38, CellState::kUnknown);
+  const PlannerOptions options = TwoCellRobot();
   const auto planner = MakeDistanceTransformPlanner(options);
   const core::Pose2 robot(0.06, 0.06, 0.0);
   const std::optional<Plan> plan = planner->Next(map, robot);
@@ -88,20 +67,20 @@ TEST(PlannerTest, WaypointsKeepToFreeCoarseCells) {
 }
 
 TEST(PlannerTest, NothingWhenNoUnknownIsLeftOrReachable) {
-  const auto planner = MakeDistanceTransformPlanner(Options());
-  EXPECT_FALSE(planner->Next(Room(20, 20), core::Pose2(0.1, 0.1, 0.0)));
+  const auto planner = MakeDistanceTransformPlanner(TwoCellRobot());
+  EXPECT_FALSE(planner->Next(WalledMap(20, 20), core::Pose2(0.1, 0.1, 0.0)));
   // Unknown only behind a wall.
-  mapping::TrinaryMap map = Room(30, 20);
-  Fill(map, 20, 1, 20, 18, CellState::kOccupied);
-  Fill(map, 21, 1, 28, 18, CellState::kUnknown);
+  mapping::TrinaryMap map = WalledMap(30, 20);
+  FillCells(map, 20, 1, 20, 18, CellState::kOccupied);
+  FillCells(map, 21, 1, 28, 18, CellState::kUnknown);
   EXPECT_FALSE(planner->Next(map, core::Pose2(0.1, 0.1, 0.0)));
 }
 
 TEST(PlannerTest, GoalUnderTheRobotGivesAnEmptyPlanThenIsGivenUp) {
-  mapping::TrinaryMap map = Room(30, 20);
-  Fill(map, 10, 10, 10, 10, CellState::kUnknown);  // in the robot's coarse cell
-  Fill(map, 22, 4, 23, 5, CellState::kUnknown);    // a second goal, farther
-  const auto planner = MakeDistanceTransformPlanner(Options());
+  mapping::TrinaryMap map = WalledMap(30, 20);
+  FillCells(map, 10, 10, 10, 10, CellState::kUnknown);  // in the robot's coarse cell
+  FillCells(map, 22, 4, 23, 5, CellState::kUnknown);    // a second goal, farther
+  const auto planner = MakeDistanceTransformPlanner(TwoCellRobot());
   const core::Pose2 robot(0.105, 0.105, 0.0);
   const std::optional<Plan> here = planner->Next(map, robot);
   ASSERT_TRUE(here);
@@ -115,10 +94,10 @@ TEST(PlannerTest, GoalUnderTheRobotGivesAnEmptyPlanThenIsGivenUp) {
 }
 
 TEST(PlannerTest, ReportedUnreachableGoalsAreNotOfferedAgain) {
-  mapping::TrinaryMap map = Room(40, 20);
-  Fill(map, 30, 10, 31, 11, CellState::kUnknown);  // nearer
-  Fill(map, 4, 10, 5, 11, CellState::kUnknown);    // farther
-  const auto planner = MakeDistanceTransformPlanner(Options());
+  mapping::TrinaryMap map = WalledMap(40, 20);
+  FillCells(map, 30, 10, 31, 11, CellState::kUnknown);  // nearer
+  FillCells(map, 4, 10, 5, 11, CellState::kUnknown);    // farther
+  const auto planner = MakeDistanceTransformPlanner(TwoCellRobot());
   const core::Pose2 robot(0.22, 0.11, 0.0);
   const std::optional<Plan> first = planner->Next(map, robot);
   ASSERT_TRUE(first);
@@ -132,11 +111,11 @@ TEST(PlannerTest, ReportedUnreachableGoalsAreNotOfferedAgain) {
 }
 
 TEST(PlannerTest, RobotInABlockedCellStartsFromAFreeNeighbour) {
-  mapping::TrinaryMap map = Room(30, 20);
-  Fill(map, 20, 1, 28, 18, CellState::kUnknown);
+  mapping::TrinaryMap map = WalledMap(30, 20);
+  FillCells(map, 20, 1, 28, 18, CellState::kUnknown);
   // An obstacle seen right beside the robot puts its cell in c-space.
-  Fill(map, 8, 12, 8, 12, CellState::kOccupied);
-  const PlannerOptions options = Options();
+  FillCells(map, 8, 12, 8, 12, CellState::kOccupied);
+  const PlannerOptions options = TwoCellRobot();
   const CoarseGrid grid = PlanningGrid(map, options);
   const core::Pose2 robot(0.085, 0.105, 0.0);
   ASSERT_EQ(grid.At(grid.geometry().CellOf(robot.translation())), CoarseCell::kBlocked);
@@ -147,8 +126,8 @@ TEST(PlannerTest, RobotInABlockedCellStartsFromAFreeNeighbour) {
 }
 
 TEST(PlannerTest, PlanAlongEntersAFreeGoalWhenAsked) {
-  mapping::TrinaryMap map = Room(20, 10);
-  const CoarseGrid known = PlanningGrid(map, Options());
+  mapping::TrinaryMap map = WalledMap(20, 10);
+  const CoarseGrid known = PlanningGrid(map, TwoCellRobot());
   CoarseGrid grid = known;
   grid.Set({7, 2}, CoarseCell::kGoal);
   const DistanceField field = ChamferDistanceTransform(grid);
@@ -164,11 +143,11 @@ TEST(PlannerTest, PlanAlongEntersAFreeGoalWhenAsked) {
 
 TEST(PlannerTest, RejectsBadOptionsAndARobotOffTheMap) {
   EXPECT_THROW(MakeDistanceTransformPlanner(PlannerOptions{}), std::invalid_argument);
-  PlannerOptions bad = Options();
+  PlannerOptions bad = TwoCellRobot();
   bad.coarse_factor = -1;
   EXPECT_THROW(MakeDistanceTransformPlanner(bad), std::invalid_argument);
-  const auto planner = MakeDistanceTransformPlanner(Options());
-  EXPECT_THROW(planner->Next(Room(10, 10), core::Pose2(0.5, 0.05, 0.0)), std::out_of_range);
+  const auto planner = MakeDistanceTransformPlanner(TwoCellRobot());
+  EXPECT_THROW(planner->Next(WalledMap(10, 10), core::Pose2(0.5, 0.05, 0.0)), std::out_of_range);
 }
 
 TEST(PlannerTest, DefaultCoarseFactorFollowsTheRadius) {

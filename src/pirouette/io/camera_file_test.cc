@@ -15,6 +15,7 @@
 
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/testing/input_error.h"
 #include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::io {
@@ -24,17 +25,7 @@ namespace fs = std::filesystem;
 
 using testing::TempDir;
 
-// Runs `load`, which must throw core::InputError, and returns the error.
-template <typename F>
-core::InputError ExpectInputError(F&& load) {
-  try {
-    load();
-  } catch (const core::InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no core::InputError was thrown";
-  return {"", -1, "", ""};
-}
+using testing::ExpectInputError;
 
 // A valid camera file; the tests below refer to its line numbers.
 constexpr char kCamera[] =

@@ -16,6 +16,7 @@
 
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/testing/input_error.h"
 #include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::io {
@@ -25,20 +26,10 @@ namespace fs = std::filesystem;
 
 using testing::TempDir;
 
-// Runs `load`, which must throw core::InputError, and returns the error.
-template <typename F>
-core::InputError ExpectInputError(F&& load) {
-  try {
-    load();
-  } catch (const core::InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no core::InputError was thrown";
-  return {"", -1, "", ""};
-}
+using testing::ExpectInputError;
 
 // A valid camera file (camera_file_test.cc checks it field by field).
-constexpr char kCamera[] =
+constexpr char kWorldCamera[] =
     "image_width: 320\n"
     "image_height: 240\n"
     "camera_name: test\n"
@@ -132,7 +123,7 @@ double TwiceArea(const std::vector<Eigen::Vector2d>& points) {
 
 TEST(WorldFileTest, LoadsEveryValue) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const sim::World world = LoadWorldFile(dir.Write("world.yaml", kWorld));
 
   EXPECT_EQ(world.name(), "test-world");
@@ -198,7 +189,7 @@ TEST(WorldFileTest, LoadsEveryValue) {
 
 TEST(WorldFileTest, OptionalFieldsTakeTheirDefaults) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const std::string text =
       "format: pirouette-world/1\n"
       "name: bare\n"
@@ -219,7 +210,7 @@ TEST(WorldFileTest, OptionalFieldsTakeTheirDefaults) {
 
 TEST(WorldFileTest, PartialLightKeepsTheOtherDefaults) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const sim::World world = LoadWorldFile(dir.Write(
       "world.yaml", EditedWorld("  direction: [0.1, 0.2, -1.0]\n  intensity: 0.7\n", "")));
   EXPECT_EQ(world.light().ambient, 0.5);
@@ -229,7 +220,7 @@ TEST(WorldFileTest, PartialLightKeepsTheOtherDefaults) {
 
 TEST(WorldFileTest, BoxWithoutYawIsAxisAligned) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const sim::World world = LoadWorldFile(dir.Write("world.yaml", EditedWorld("yaw: 30, ", "")));
   EXPECT_TRUE(SamePoints(world.obstacles()[0].footprint,
                          {{0.35, 0.80}, {0.45, 0.80}, {0.45, 1.00}, {0.35, 1.00}}));
@@ -237,7 +228,7 @@ TEST(WorldFileTest, BoxWithoutYawIsAxisAligned) {
 
 TEST(WorldFileTest, PrismMayBeClockwiseOrAClosedRing) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const sim::World world = LoadWorldFile(
       dir.Write("world.yaml", EditedWorld("[[1.0, 1.0], [1.2, 1.0], [1.1, 1.2]]",
                                           "[[1.0, 1.0], [1.1, 1.2], [1.2, 1.0], [1.0, 1.0]]")));
@@ -248,7 +239,7 @@ TEST(WorldFileTest, PrismMayBeClockwiseOrAClosedRing) {
 
 TEST(WorldFileTest, CameraPathIsRelativeToTheWorldFilesFolder) {
   const TempDir dir;
-  dir.Write("cams/other.yaml", kCamera);
+  dir.Write("cams/other.yaml", kWorldCamera);
   const std::string path =
       dir.Write("worlds/world.yaml", EditedWorld("camera: cam.yaml", "camera: ../cams/other.yaml"));
   const fs::path cwd = fs::current_path();
@@ -260,7 +251,7 @@ TEST(WorldFileTest, CameraPathIsRelativeToTheWorldFilesFolder) {
 
 TEST(WorldFileTest, CameraPathMayBeAbsolute) {
   const TempDir dir;
-  const std::string camera = dir.Write("elsewhere/cam.yaml", kCamera);
+  const std::string camera = dir.Write("elsewhere/cam.yaml", kWorldCamera);
   const sim::World world =
       LoadWorldFile(dir.Write("world.yaml", EditedWorld("camera: cam.yaml", "camera: " + camera)));
   EXPECT_EQ(world.robot().camera.name(), "test");
@@ -268,7 +259,7 @@ TEST(WorldFileTest, CameraPathMayBeAbsolute) {
 
 TEST(WorldFileTest, ReadsOdometryBiasesAndRefusesLargeOnes) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const sim::World world = LoadWorldFile(
       dir.Write("world.yaml", EditedWorld("    rotation: 0.02\n",
                                           "    rotation: 0.02\n    translation_bias: 0.03\n"
@@ -283,8 +274,9 @@ TEST(WorldFileTest, ReadsOdometryBiasesAndRefusesLargeOnes) {
 
 TEST(WorldFileTest, CameraMayBeInline) {
   const TempDir dir;
-  const sim::World world = LoadWorldFile(dir.Write(
-      "world.yaml", EditedWorld("  camera: cam.yaml\n", "  camera:\n" + Indented(kCamera, 4))));
+  const sim::World world = LoadWorldFile(
+      dir.Write("world.yaml",
+                EditedWorld("  camera: cam.yaml\n", "  camera:\n" + Indented(kWorldCamera, 4))));
   EXPECT_EQ(world.robot().camera.name(), "test");
   EXPECT_EQ(world.robot().camera.mount().height_m, 0.11);
   EXPECT_EQ(world.robot().odometry_noise.rotation, 0.02);
@@ -292,7 +284,7 @@ TEST(WorldFileTest, CameraMayBeInline) {
 
 TEST(WorldFileTest, RefusesABadInlineCameraFieldAtItsLineInTheWorldFile) {
   const TempDir dir;
-  const std::string camera = Edited(kCamera, "tilt: 30", "tilt: 95");
+  const std::string camera = Edited(kWorldCamera, "tilt: 30", "tilt: 95");
   const std::string path = dir.Write(
       "world.yaml", EditedWorld("  camera: cam.yaml\n", "  camera:\n" + Indented(camera, 4)));
   const core::InputError error = ExpectInputError([&] { LoadWorldFile(path); });
@@ -304,8 +296,8 @@ TEST(WorldFileTest, RefusesABadInlineCameraFieldAtItsLineInTheWorldFile) {
 TEST(WorldFileTest, RefusesAnUnknownInlineCameraKey) {
   const TempDir dir;
   const std::string path = dir.Write(
-      "world.yaml",
-      EditedWorld("  camera: cam.yaml\n", "  camera:\n" + Indented(kCamera, 4) + "    zoom: 2\n"));
+      "world.yaml", EditedWorld("  camera: cam.yaml\n",
+                                "  camera:\n" + Indented(kWorldCamera, 4) + "    zoom: 2\n"));
   const core::InputError error = ExpectInputError([&] { LoadWorldFile(path); });
   EXPECT_EQ(error.field(), "robot.camera.zoom");
   EXPECT_EQ(error.line(), 23 + 11);
@@ -313,7 +305,7 @@ TEST(WorldFileTest, RefusesAnUnknownInlineCameraKey) {
 
 TEST(WorldFileTest, ABadCameraFileIsReportedInTheCameraFile) {
   const TempDir dir;
-  const std::string camera = dir.Write("cam.yaml", Edited(kCamera, "tilt: 30", "tilt: 95"));
+  const std::string camera = dir.Write("cam.yaml", Edited(kWorldCamera, "tilt: 30", "tilt: 95"));
   const core::InputError error =
       ExpectInputError([&] { LoadWorldFile(dir.Write("world.yaml", kWorld)); });
   EXPECT_EQ(error.file(), camera);
@@ -354,7 +346,7 @@ TEST(WorldFileTest, RefusesAnEmptyFile) {
 
 TEST(WorldFileTest, RefusesMalformedYamlAtItsLine) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const std::string path =
       dir.Write("world.yaml", EditedWorld("  ambient: 0.5\n", "  ambient: 0.5\n   x: : :\n"));
   const core::InputError error = ExpectInputError([&] { LoadWorldFile(path); });
@@ -365,7 +357,7 @@ TEST(WorldFileTest, RefusesMalformedYamlAtItsLine) {
 
 TEST(WorldFileTest, RefusesObstaclesThatAreNotAList) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   std::string text = kWorld;
   const std::size_t begin = text.find("obstacles:\n");
   text.replace(begin, text.find("light:\n") - begin, "obstacles: 3\n");
@@ -386,7 +378,7 @@ TEST(WorldFileTest, RefusesATopLevelThatIsNotAMap) {
   EXPECT_EQ(error.line(), 1);
 }
 
-struct BadCase {
+struct WorldBadCase {
   const char* name;
   const char* from;  // text of kWorld...
   const char* to;    // ...replaced by this
@@ -395,12 +387,12 @@ struct BadCase {
   const char* message;  // a part of the message
 };
 
-class WorldFileBadInputTest : public ::testing::TestWithParam<BadCase> {};
+class WorldFileBadInputTest : public ::testing::TestWithParam<WorldBadCase> {};
 
 TEST_P(WorldFileBadInputTest, IsRefusedWithFieldAndLine) {
-  const BadCase& c = GetParam();
+  const WorldBadCase& c = GetParam();
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const std::string path = dir.Write("world.yaml", EditedWorld(c.from, c.to));
   const core::InputError error = ExpectInputError([&] { LoadWorldFile(path); });
   EXPECT_EQ(error.file(), path);
@@ -409,7 +401,7 @@ TEST_P(WorldFileBadInputTest, IsRefusedWithFieldAndLine) {
   EXPECT_NE(std::string(error.what()).find(c.message), std::string::npos) << error.what();
 }
 
-const BadCase kBadCases[] = {
+const WorldBadCase kWorldBadCases[] = {
     // The format.
     {"MissingFormat", "format: pirouette-world/1\n", "", "format", 1, "missing required key"},
     {"WrongFormat", "format: pirouette-world/1", "format: pirouette-world/2", "format", 1,
@@ -555,8 +547,8 @@ const BadCase kBadCases[] = {
      21, "does not lie on the floor"},
 };
 
-INSTANTIATE_TEST_SUITE_P(AllCases, WorldFileBadInputTest, ::testing::ValuesIn(kBadCases),
-                         [](const ::testing::TestParamInfo<BadCase>& info) {
+INSTANTIATE_TEST_SUITE_P(AllCases, WorldFileBadInputTest, ::testing::ValuesIn(kWorldBadCases),
+                         [](const ::testing::TestParamInfo<WorldBadCase>& info) {
                            return std::string(info.param.name);
                          });
 
@@ -672,7 +664,7 @@ TEST(WorldFileTest, SoccerFieldIsThePapersEnvironment) {
 
 TEST(WorldFileTest, ChessboardIsDrawnButNoObstacle) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const sim::World world = LoadWorldFile(dir.Write(
       "world.yaml", EditedWorld("obstacles:\n",
                                 "obstacles:\n  - chessboard: {centre: [1.5, 1.0], cols: 9, "
@@ -697,7 +689,7 @@ TEST(WorldFileTest, ChessboardIsDrawnButNoObstacle) {
 
 TEST(WorldFileTest, RefusesBadChessboards) {
   const TempDir dir;
-  dir.Write("cam.yaml", kCamera);
+  dir.Write("cam.yaml", kWorldCamera);
   const auto error_for = [&dir](const std::string& board) {
     const std::string path = dir.Write(
         "world.yaml", EditedWorld("obstacles:\n", "obstacles:\n  - chessboard: " + board + "\n"));

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "pirouette/core/input_error.h"
+#include "pirouette/testing/input_error.h"
 
 namespace pirouette::io {
 namespace {
@@ -19,17 +20,7 @@ YamlField Root(const std::string& text) {
   return {node, "", LineOf(node)};
 }
 
-// Runs `read`, which must throw core::InputError, and returns the error.
-template <typename F>
-core::InputError ExpectInputError(F&& read) {
-  try {
-    read();
-  } catch (const core::InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no core::InputError was thrown";
-  return {"", -1, "", ""};
-}
+using testing::ExpectInputError;
 
 TEST(YamlFieldsTest, ScalarKindsFollowTheCoreSchema) {
   const YAML::Node node = YAML::Load(

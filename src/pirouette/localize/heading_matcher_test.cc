@@ -8,21 +8,22 @@
 
 #include "pirouette/mapping/range_sensor_model.h"
 #include "pirouette/testing/test_room.h"
+#include "pirouette/testing/units.h"
 
 namespace pirouette::localize {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kCell = 0.01;
+using testing::kPi;
+using testing::kRoomCellM;
 
 using testing::Frame;
 
-constexpr double kDeg = kPi / 180.0;
+using testing::kDeg;
 
 // The map made from a pirouette of 12 frames at `at`.
 mapping::OccupancyGrid PirouetteMap(const Eigen::Vector2d& at) {
   mapping::OccupancyGrid grid(
-      core::GridGeometry(kCell, Eigen::Vector2d(-0.1043, -0.1057), 220, 170),
+      core::GridGeometry(kRoomCellM, Eigen::Vector2d(-0.1043, -0.1057), 220, 170),
       mapping::OccupancyOptions{.hit_probability = 0.8, .miss_probability = 0.18});
   for (int k = 0; k < 12; ++k) {
     const core::Pose2 pose(at.x(), at.y(), k * kPi / 6.0);

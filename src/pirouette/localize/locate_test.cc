@@ -15,7 +15,7 @@ namespace {
 constexpr double kMaxRange = 0.8;
 
 using testing::MakeWalledRoom;
-using Room = testing::WalledRoom;
+using testing::WalledRoom;
 
 // What a perfect pirouette at `pose` would see: the map's own view, in the
 // robot's frame.
@@ -24,7 +24,7 @@ struct Query {
   std::vector<core::ReadingKind> kinds;
 };
 
-Query ViewFrom(const Room& room, const core::Pose2& pose) {
+Query ViewFrom(const WalledRoom& room, const core::Pose2& pose) {
   const MapView v = CastMapView(room.map, pose.translation(), kMaxRange, room.colours);
   const int shift = static_cast<int>(std::lround(core::RadToDeg(pose.heading())));
   Query q;
@@ -39,7 +39,7 @@ Query ViewFrom(const Room& room, const core::Pose2& pose) {
 }
 
 TEST(LocateTest, ColoursTellASymmetricRoomFromItsMirrorImage) {
-  const Room room = MakeWalledRoom();
+  const WalledRoom room = MakeWalledRoom();
   const core::Pose2 truth(0.30, 0.25, core::DegToRad(20.0));
   const Query q = ViewFrom(room, truth);
   constexpr double kSpacing = 0.1;
@@ -69,13 +69,13 @@ TEST(LocateTest, ColoursTellASymmetricRoomFromItsMirrorImage) {
 }
 
 TEST(LocateTest, TheTableNameChangesWithTheColours) {
-  const Room room = MakeWalledRoom();
+  const WalledRoom room = MakeWalledRoom();
   EXPECT_NE(MapTableName(room.map, {}, 0.04, 0.1, kMaxRange),
             MapTableName(room.map, room.colours, 0.04, 0.1, kMaxRange));
 }
 
 TEST(LocateTest, TheMapViewHasItsHitsColours) {
-  const Room room = MakeWalledRoom();
+  const WalledRoom room = MakeWalledRoom();
   const MapView v = CastMapView(room.map, {0.5, 0.3}, kMaxRange, room.colours);
   ASSERT_EQ(v.colours.size(), 360u);
   EXPECT_EQ(v.colours[0], core::ColourClass::kHue8);    // east, 0.48 m
@@ -85,7 +85,7 @@ TEST(LocateTest, TheMapViewHasItsHitsColours) {
 }
 
 TEST(LocateTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle) {
-  Room room = MakeWalledRoom();
+  WalledRoom room = MakeWalledRoom();
   const core::GridGeometry& g = room.map.geometry;
   std::vector<core::ColourClass> colours = room.colours.cells();
   // A block of cells x 35..39, y 13..17: its outline occupied (hue 4), its
@@ -118,7 +118,7 @@ TEST(LocateTest, ARayThroughAGapInAnObstaclesOutlineMeetsTheObstacle) {
 }
 
 TEST(LocateTest, ARayPassesFilledPinholes) {
-  Room room = MakeWalledRoom();
+  WalledRoom room = MakeWalledRoom();
   const core::GridGeometry& g = room.map.geometry;
   const auto set = [&](int x, int y, mapping::CellState s) { room.map.cells[g.Flat({x, y})] = s; };
   set(10, 10, mapping::CellState::kUnknown);  // a pinhole

@@ -8,18 +8,19 @@
 
 #include "pirouette/mapping/range_sensor_model.h"
 #include "pirouette/testing/test_room.h"
+#include "pirouette/testing/units.h"
 
 namespace pirouette::localize {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kCell = 0.01;
+using testing::kPi;
+using testing::kRoomCellM;
 
 using testing::Frame;
 
 mapping::OccupancyGrid EmptyGrid() {
   return mapping::OccupancyGrid(
-      core::GridGeometry(kCell, Eigen::Vector2d(-0.1043, -0.1057), 220, 170),
+      core::GridGeometry(kRoomCellM, Eigen::Vector2d(-0.1043, -0.1057), 220, 170),
       mapping::OccupancyOptions{.hit_probability = 0.8, .miss_probability = 0.18});
 }
 

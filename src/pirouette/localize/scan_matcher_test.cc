@@ -1,4 +1,5 @@
 #include "pirouette/localize/scan_matcher.h"
+#include "pirouette/testing/units.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,7 @@
 namespace pirouette::localize {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using testing::kDeg;
 
 // Points every `step` metres along the segment from a to b, the first
 // `phase` of a step in.

@@ -20,6 +20,7 @@
 #include "pirouette/robot/robot_server.h"
 #include "pirouette/robot/tcp_connection.h"
 #include "pirouette/testing/fake_robot.h"
+#include "pirouette/testing/serving.h"
 
 namespace pirouette::robot {
 namespace {
@@ -28,21 +29,7 @@ using ::testing::AllOf;
 using ::testing::HasSubstr;
 using namespace std::chrono_literals;  // NOLINT(google-build-using-namespace)
 
-// Serves `server` on a thread for the life of the object.
-class Serving {
- public:
-  explicit Serving(RobotServer& server) : server_(server), thread_([&server] { server.Serve(); }) {}
-  ~Serving() {
-    server_.Stop();
-    thread_.join();
-  }
-  Serving(const Serving&) = delete;
-  Serving& operator=(const Serving&) = delete;
-
- private:
-  RobotServer& server_;
-  std::thread thread_;
-};
+using testing::Serving;
 
 // A misbehaving robot: listens on 127.0.0.1 (any free port), takes one
 // client and runs `script` on the connection, on a thread.

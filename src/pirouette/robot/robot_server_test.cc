@@ -11,6 +11,7 @@
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/tcp_connection.h"
 #include "pirouette/testing/fake_robot.h"
+#include "pirouette/testing/serving.h"
 
 namespace pirouette::robot {
 namespace {
@@ -44,21 +45,7 @@ class Client {
   TcpConnection connection_;
 };
 
-// Runs Serve() on a thread for the life of the object.
-class Serving {
- public:
-  explicit Serving(RobotServer& server) : server_(server), thread_([&server] { server.Serve(); }) {}
-  ~Serving() {
-    server_.Stop();
-    thread_.join();
-  }
-  Serving(const Serving&) = delete;
-  Serving& operator=(const Serving&) = delete;
-
- private:
-  RobotServer& server_;
-  std::thread thread_;
-};
+using testing::Serving;
 
 TEST(RobotServerTest, ReportsThePortItPicked) {
   testing::FakeRobot robot(2, 2);

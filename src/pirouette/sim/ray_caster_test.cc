@@ -14,7 +14,7 @@ using Eigen::Vector3d;
 
 // The paper's camera (worlds/yujin.yaml) with the principal point on column
 // 160, so that the column sees straight ahead.
-camera::CameraModel PaperCamera() {
+camera::CameraModel CentredPaperCamera() {
   return camera::CameraModel("yujin", 320, 240, {277.13, 277.13, 160.0, 119.5},
                              {-0.20, 0.05, 0.0, 0.0, 0.0}, {0.11, core::DegToRad(30.0), 0.03},
                              {{0.35, 0.30, 0.40}});
@@ -28,7 +28,7 @@ World MakeWorld(const Vector2d& floor_size, std::optional<BoundaryWalls> walls,
 }
 
 TEST(RayCasterTest, CastsMeetTheFloorTheSolidsAndTheGround) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = CentredPaperCamera();
   const World world = MakeWorld({2.0, 2.0}, std::nullopt,
                                 {MakeBox({1.0, 1.0}, {0.2, 0.2}, 0.0, 0.1, {200, 0, 0}),
                                  MakeCylinder({1.0, 0.4}, 0.1, 0.05, {0, 200, 0})},
@@ -69,7 +69,7 @@ TEST(RayCasterTest, CastsMeetTheFloorTheSolidsAndTheGround) {
 // shows slanted, the paper's §5.2): the floor ends there at a point behind
 // the obstacle, in its shadow, and the obstacle itself is nearer.
 TEST(RayCasterTest, TrueProfileAgreesWithWorldRayCast) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = CentredPaperCamera();
   const World world = MakeWorld({1.0, 1.0}, BoundaryWalls{0.1, 0.02, {235, 235, 235}},
                                 {MakeBox({0.62, 0.45}, {0.06, 0.10}, 0.3, 0.08, {200, 40, 40}),
                                  MakeCylinder({0.58, 0.62}, 0.04, 0.1, {40, 160, 40})},
@@ -111,7 +111,7 @@ TEST(RayCasterTest, TrueProfileAgreesWithWorldRayCast) {
 }
 
 TEST(RayCasterTest, OpenFloorIsClearAndAnObstacleAtTheFeetIsBlind) {
-  const camera::CameraModel camera = PaperCamera();
+  const camera::CameraModel camera = CentredPaperCamera();
   const World open = MakeWorld({4.0, 4.0}, std::nullopt, {}, camera);
   const core::ObstacleProfile clear =
       RayCaster(open, camera).TrueProfile(core::Pose2(2.0, 2.0, 0.3), 0.4);

@@ -19,7 +19,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kRadius = 0.1;
 constexpr core::Rgb kGrey{128, 128, 128};
 
-camera::CameraModel TestCamera() {
+camera::CameraModel BoxWorldCamera() {
   return camera::CameraModel("test", 320, 240, {277.13, 277.13, 159.5, 119.5}, {},
                              {0.11, core::DegToRad(30.0), 0.03}, {});
 }
@@ -30,7 +30,7 @@ World BoxWorld(core::OdometryNoise noise = {},
                const core::Pose2& start = core::Pose2(0.5, 0.75, 0.0)) {
   std::vector<Solid> obstacles = {MakeBox({1.1, 0.75}, {0.2, 0.3}, 0.0, 0.1, kGrey)};
   return World("box", Floor{{2.0, 1.5}, kGrey, 0.0}, std::nullopt, std::move(obstacles), Light{},
-               RobotSpec{start, kRadius, TestCamera(), noise});
+               RobotSpec{start, kRadius, BoxWorldCamera(), noise});
 }
 
 // A cluttered 3 × 2 world with walls and every kind of solid.
@@ -45,7 +45,7 @@ World ClutteredWorld() {
   };
   return World("cluttered", Floor{{3.0, 2.0}, kGrey, 0.0}, BoundaryWalls{0.1, 0.05, kGrey},
                std::move(obstacles), Light{},
-               RobotSpec{core::Pose2(1.0, 1.0, 0.0), kRadius, TestCamera(), {}});
+               RobotSpec{core::Pose2(1.0, 1.0, 0.0), kRadius, BoxWorldCamera(), {}});
 }
 
 SimRobot::View EmptyView() {
@@ -169,7 +169,7 @@ TEST(SimRobotTest, SlidesAlongAFaceItTouches) {
 TEST(SimRobotTest, StopsAtACylinderOffItsAxis) {
   std::vector<Solid> obstacles = {MakeCylinder({1.5, 0.75}, 0.1, 0.1, kGrey)};
   const World world("cylinder", Floor{{2.0, 1.5}, kGrey, 0.0}, std::nullopt, std::move(obstacles),
-                    Light{}, RobotSpec{core::Pose2(0.5, 0.8, 0.0), kRadius, TestCamera(), {}});
+                    Light{}, RobotSpec{core::Pose2(0.5, 0.8, 0.0), kRadius, BoxWorldCamera(), {}});
   SimRobot robot(world, 1, EmptyView());
   const MoveOutcome outcome = robot.Execute(Move::Straight(2.0));
   EXPECT_TRUE(outcome.stopped_at_contact);
@@ -193,7 +193,7 @@ TEST(SimRobotTest, ContactsAgreeWithSphereTracingOnClearance) {
     if (world.Clearance(start.translation()) < kRadius + 0.01) continue;
     ++trials;
     const World world_here("here", world.floor(), world.walls(), world.obstacles(), Light{},
-                           RobotSpec{start, kRadius, TestCamera(), {}});
+                           RobotSpec{start, kRadius, BoxWorldCamera(), {}});
     SimRobot robot(world_here, 1, EmptyView());
     const double length = 1.5;
     const MoveOutcome outcome = robot.Execute(Move::Straight(length));

@@ -31,12 +31,12 @@ void ExpectNear(const Eigen::Vector2d& actual, const Eigen::Vector2d& expected, 
   EXPECT_NEAR(actual.y(), expected.y(), tolerance);
 }
 
-camera::CameraModel TestCamera() {
+camera::CameraModel WorldTestCamera() {
   return camera::CameraModel("test", 320, 240, {277.13, 277.13, 159.5, 119.5}, {},
                              {0.11, core::DegToRad(30.0), 0.03}, {});
 }
 
-RobotSpec TestRobot() { return RobotSpec{core::Pose2(1.0, 1.0, 0.0), 0.04, TestCamera(), {}}; }
+RobotSpec TestRobot() { return RobotSpec{core::Pose2(1.0, 1.0, 0.0), 0.04, WorldTestCamera(), {}}; }
 
 // L-shaped prism, clockwise as given; its notch is [0.4, 0.6] × [0.4, 0.6].
 std::vector<Eigen::Vector2d> ClockwiseL() {

@@ -13,6 +13,7 @@
 
 #include "pirouette/explore/coarse_grid.h"
 #include "pirouette/explore/distance_transform.h"
+#include "pirouette/explore/planner.h"
 #include "pirouette/mapping/trinary_map.h"
 
 namespace pirouette::testing {
@@ -209,6 +210,37 @@ inline std::vector<std::int32_t> Distances(const explore::DistanceField& field) 
     for (int x = 0; x < field.width(); ++x) d.push_back(field.At({x, y}));
   }
   return d;
+}
+
+// A map of w × h cells of 1 cm, walled all round (one cell thick), free inside.
+inline mapping::TrinaryMap WalledMap(int w, int h) {
+  mapping::TrinaryMap map{core::GridGeometry(0.01, {0.0, 0.0}, w, h),
+                          std::vector<mapping::CellState>(static_cast<std::size_t>(w) * h)};
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const bool wall = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+      map.cells[map.geometry.Flat({x, y})] =
+          wall ? mapping::CellState::kOccupied : mapping::CellState::kFree;
+    }
+  }
+  return map;
+}
+
+// Sets the cells [x0, x1] × [y0, y1] of `map` to `state`.
+inline void FillCells(mapping::TrinaryMap& map, int x0, int y0, int x1, int y1,
+                      mapping::CellState state) {
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) map.cells[map.geometry.Flat({x, y})] = state;
+  }
+}
+
+// A planner's options for a robot two 1 cm cells in radius, on coarse cells
+// of two map cells.
+inline explore::PlannerOptions TwoCellRobot() {
+  explore::PlannerOptions options;
+  options.robot_radius_m = 0.02;
+  options.coarse_factor = 2;
+  return options;
 }
 
 }  // namespace pirouette::testing

@@ -14,6 +14,9 @@
 
 namespace pirouette::testing {
 
+// The cell of the maps the localization tests make of the room.
+inline constexpr double kRoomCellM = 0.01;
+
 // The range from `pose` along the robot-frame bearing to the walls of a room
 // [0, 2] x [0, 1.5] with a box [1.2, 1.4] x [0.5, 0.8] in it.
 inline double RayCast(const core::Pose2& pose, double bearing) {

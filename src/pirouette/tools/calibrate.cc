@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 #include <stdexcept>
@@ -18,6 +20,7 @@
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/camera_file.h"
+#include "pirouette/tools/json_output.h"
 #include "pirouette/vision/chessboard_detector.h"
 #include "pirouette/vision/intrinsics_calibration.h"
 #include "pirouette/vision/mount_calibration.h"
@@ -28,46 +31,44 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh camera file's mount until `calibrate mount` measures it.
+// A fresh camera file's mount until `calibrate mount` measures it: 10 cm
+// above the floor, tilted 30° down, over the centre of rotation, about where
+// a small robot's camera sits, so that the file loads and its ranges are
+// roughly right; a guess, replaced by the measurement.
 constexpr camera::Mount kPlaceholderMount{0.10, core::DegToRad(30.0), 0.0};
 
-// Numbers as written to camera files: far finer than any calibration resolves.
-double Rounded(double value, double step) { return std::round(value / step) * step; }
+// Decimals of the numbers written to camera files (and printed): far finer
+// than any calibration resolves, yet few enough that the files read easily.
+constexpr int kPixelDecimals = 4;       // fx, fy, cx, cy: 1e-4 px
+constexpr int kDistortionDecimals = 7;  // k1, k2, p1, p2, k3
+constexpr int kVignettingDecimals = 4;  // vignetting.k
+constexpr int kMountDecimals = 5;       // mount height and forward, metres: 0.01 mm
+constexpr int kTiltDecimals = 3;        // mount tilt, degrees
+// Decimals of the reports' other figures.
+constexpr int kErrorDecimals = 4;        // reprojection errors, pixels
+constexpr int kLevelDecimals = 2;        // the flat field's centre level, 0-255
+constexpr int kDepartureDecimals = 5;    // the flat field's RMS relative departure
+constexpr int kRollDecimals = 3;         // degrees
+constexpr int kBoardOffsetDecimals = 5;  // metres
 
-std::string JsonString(std::string_view text) {
-  std::string out = "\"";
-  for (const char ch : text) {
-    switch (ch) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(ch) < 0x20) {
-          out += fmt::format("\\u{:04x}", static_cast<unsigned>(ch));
-        } else {
-          out += ch;
-        }
-    }
-  }
-  return out + "\"";
-}
-
-std::string JsonNumbers(const double* values, std::size_t n, int decimals) {
-  std::string out = "[";
-  for (std::size_t i = 0; i < n; ++i) {
-    out += fmt::format("{}{:.{}f}", i == 0 ? "" : ", ", values[i], decimals);
-  }
-  return out + "]";
-}
+// Past these, a note says what to check. Lower thresholds would warn about
+// sound calibrations from slightly soft photos; higher ones let blur, a bent
+// board or uneven light pass unremarked.
+// RMS reprojection error, pixels: well under 1 px from sharp photos of a flat board.
+constexpr double kHighReprojectionPx = 1.0;
+// Views used: 10 to 20, the board tilted differently and reaching every part
+// of the image, make a reliable calibration.
+constexpr std::size_t kRecommendedViews = 10;
+// A flat field's RMS relative departure from the vignetting model: a few
+// thousandths for a uniform, evenly lit surface.
+constexpr double kFlatFieldDeparture = 0.02;
+// The camera's roll, degrees: the camera model has none.
+constexpr double kRollWarningDeg = 2.0;
+// The board's centre off the camera's forward axis, metres: it should lie on
+// the robot's axis.
+constexpr double kBoardOffsetWarningM = 0.02;
+// The largest tilt a camera file holds: the model's tilt lies in (-90°, 90°).
+constexpr double kMaxTiltDeg = 89.99;
 
 std::string SizeText(cv::Size size) { return fmt::format("{}x{}", size.width, size.height); }
 
@@ -134,6 +135,195 @@ void WriteCamera(const std::string& path, const camera::CameraModel& camera) {
   io::WriteFileAtomically(path, io::CameraFileText(camera));
 }
 
+// The inner corners of a valid `calibrate intrinsics` request.
+cv::Size CheckIntrinsicsRequest(const IntrinsicsCalibrationRequest& request) {
+  const cv::Size pattern = ParseBoardSize(request.board, "--board");
+  CheckPositive(request.square_m, "--square", "the squares' side (metres)");
+  if (request.radial_coefficients != 2 && request.radial_coefficients != 3) {
+    throw core::InputError("--k-coefficients", 0, "",
+                           fmt::format("expected 2 or 3, got {}", request.radial_coefficients));
+  }
+  return pattern;
+}
+
+// The board's corners in each image where it was found, and the names of the
+// others; every image must have the first's size.
+struct BoardViews {
+  std::vector<vision::ChessboardView> views;
+  std::vector<std::string> skipped;
+  cv::Size image_size;
+};
+
+BoardViews FindBoards(const std::vector<fs::path>& images, cv::Size pattern) {
+  const vision::ChessboardDetector detector(pattern);
+  BoardViews found;
+  std::string first;
+  for (const fs::path& path : images) {
+    const cv::Mat bgr = ReadBgr(path.string());
+    const std::string name = path.filename().string();
+    if (first.empty()) {
+      found.image_size = bgr.size();
+      first = name;
+    } else if (bgr.size() != found.image_size) {
+      throw core::InputError(path.string(), 0, "",
+                             fmt::format("the image is {}, but {} is {}: every view must come from "
+                                         "the same camera at the same resolution",
+                                         SizeText(bgr.size()), first, SizeText(found.image_size)));
+    }
+    if (auto corners = detector.Find(bgr)) {
+      found.views.push_back({name, std::move(*corners)});
+    } else {
+      found.skipped.push_back(name);
+    }
+  }
+  return found;
+}
+
+void CheckEnoughViews(const BoardViews& found, std::size_t images,
+                      const IntrinsicsCalibrationRequest& request) {
+  if (found.views.empty()) {
+    throw core::InputError(
+        request.images_dir, 0, "",
+        fmt::format("no {} board found in any of the {} images (--board counts the inner corners: "
+                    "a board of 10 x 7 squares is 9x6)",
+                    request.board, images));
+  }
+  if (static_cast<int>(found.views.size()) < vision::kMinCalibrationViews) {
+    throw core::InputError(request.images_dir, 0, "",
+                           fmt::format("the board was found in only {} of the {} images; at least "
+                                       "{} are needed (10 to 20 make a good calibration)",
+                                       found.views.size(), images, vision::kMinCalibrationViews));
+  }
+}
+
+// What a calibrated camera file keeps of the one it replaces (or a new one's
+// placeholders), and the note that says which.
+struct KeptFields {
+  std::string name;
+  camera::Mount mount = kPlaceholderMount;
+  camera::Vignetting vignetting;
+  std::string note;
+};
+
+KeptFields KeptFromCameraFile(const IntrinsicsCalibrationRequest& request) {
+  KeptFields kept;
+  std::error_code error;
+  if (fs::exists(request.out_path, error)) {
+    const camera::CameraModel old = io::LoadCameraFile(request.out_path);
+    kept.name = old.name();
+    kept.mount = old.mount();
+    kept.vignetting = old.vignetting();
+    kept.note =
+        fmt::format("{}: intrinsics and distortion replaced; its name, mount and vignetting kept",
+                    request.out_path);
+  } else {
+    kept.name = request.camera_name;
+    kept.note = fmt::format(
+        "{}: new camera file; its mount is a placeholder until `pirouette calibrate mount`, its "
+        "vignetting 0 until `pirouette calibrate vignetting`",
+        request.out_path);
+  }
+  return kept;
+}
+
+// The camera file's intrinsics and distortion as written and printed.
+camera::Intrinsics RoundedIntrinsics(const camera::Intrinsics& k) {
+  return {RoundTo(k.fx, kPixelDecimals), RoundTo(k.fy, kPixelDecimals),
+          RoundTo(k.cx, kPixelDecimals), RoundTo(k.cy, kPixelDecimals)};
+}
+
+camera::PlumbBob RoundedDistortion(const camera::PlumbBob& d) {
+  return {RoundTo(d.k1, kDistortionDecimals), RoundTo(d.k2, kDistortionDecimals),
+          RoundTo(d.p1, kDistortionDecimals), RoundTo(d.p2, kDistortionDecimals),
+          RoundTo(d.k3, kDistortionDecimals)};
+}
+
+// The notes on a calibration that worked but may not be reliable.
+std::vector<std::string> IntrinsicsQualityNotes(const vision::IntrinsicsCalibration& calibration) {
+  std::vector<std::string> notes;
+  if (calibration.rms_px > kHighReprojectionPx) {
+    notes.push_back(fmt::format(
+        "reprojection error {:.2f} px is high (expect well under 1 px): check the photos for blur "
+        "and the board for flatness, and --square",
+        calibration.rms_px));
+  }
+  if (calibration.used.size() < kRecommendedViews) {
+    notes.push_back(fmt::format(
+        "only {} views used: 10 to 20, the board tilted differently and reaching every part of the "
+        "image, give a more reliable calibration",
+        calibration.used.size()));
+  }
+  return notes;
+}
+
+nlohmann::ordered_json ViewErrorsJson(const std::vector<vision::ViewError>& views) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const vision::ViewError& view : views) {
+    out.push_back({{"image", view.name}, {"error_px", RoundTo(view.rms_px, kErrorDecimals)}});
+  }
+  return out;
+}
+
+std::string IntrinsicsJson(const IntrinsicsCalibrationRequest& request, const BoardViews& found,
+                           const vision::IntrinsicsCalibration& calibration) {
+  const camera::Intrinsics k = RoundedIntrinsics(calibration.intrinsics);
+  const camera::PlumbBob d = RoundedDistortion(calibration.distortion);
+  nlohmann::ordered_json json;
+  json["views_used"] = calibration.used.size();
+  json["views_skipped"] = found.skipped;
+  json["views_dropped"] = ViewErrorsJson(calibration.dropped);
+  json["reprojection_error_px"] = RoundTo(calibration.rms_px, kErrorDecimals);
+  json["fx"] = k.fx;
+  json["fy"] = k.fy;
+  json["cx"] = k.cx;
+  json["cy"] = k.cy;
+  json["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  json["image_width"] = found.image_size.width;
+  json["image_height"] = found.image_size.height;
+  json["views"] = ViewErrorsJson(calibration.used);
+  json["camera"] = request.out_path;
+  return JsonText(json, -1);
+}
+
+// The inner corners of a valid `calibrate mount` request.
+cv::Size CheckMountRequest(const MountCalibrationRequest& request) {
+  const cv::Size pattern = ParseBoardSize(request.board, "--board");
+  CheckPositive(request.square_m, "--square", "the squares' side (metres)");
+  CheckPositive(request.board_distance_m, "--board-distance",
+                "the distance from the robot's centre to the board's centre (metres)");
+  if (!(request.board_thickness_m >= 0.0) || !std::isfinite(request.board_thickness_m)) {
+    throw core::InputError("--board-thickness", 0, "",
+                           fmt::format("must be >= 0, got {}", request.board_thickness_m));
+  }
+  return pattern;
+}
+
+// The notes on a measured mount that may be off: a rolled camera, a board
+// off the axis, corners that reproject badly.
+std::vector<std::string> MountNotes(const vision::MountCalibration& m) {
+  std::vector<std::string> notes;
+  const double roll_deg = core::RadToDeg(m.roll_rad);
+  if (std::abs(roll_deg) > kRollWarningDeg) {
+    notes.push_back(fmt::format(
+        "the camera is rolled {:.1f} deg about its axis; the camera model has no roll: level it "
+        "on the robot",
+        roll_deg));
+  }
+  if (std::abs(m.board_left_m) > kBoardOffsetWarningM) {
+    notes.push_back(fmt::format(
+        "the board's centre is {:.3f} m {} of the camera's forward axis: was it on the robot's "
+        "axis? (or the camera looks askew)",
+        std::abs(m.board_left_m), m.board_left_m > 0 ? "left" : "right"));
+  }
+  if (m.rms_px > kHighReprojectionPx) {
+    notes.push_back(fmt::format(
+        "the board's corners reproject {:.2f} px off: check the intrinsics (calibrate intrinsics "
+        "first) and --square",
+        m.rms_px));
+  }
+  return notes;
+}
+
 }  // namespace
 
 cv::Size ParseBoardSize(const std::string& text, const std::string& option) {
@@ -169,58 +359,21 @@ cv::Size ParseBoardSize(const std::string& text, const std::string& option) {
 }
 
 CalibrationReport CalibrateIntrinsics(const IntrinsicsCalibrationRequest& request) {
-  const cv::Size pattern = ParseBoardSize(request.board, "--board");
-  CheckPositive(request.square_m, "--square", "the squares' side (metres)");
-  if (request.radial_coefficients != 2 && request.radial_coefficients != 3) {
-    throw core::InputError("--k-coefficients", 0, "",
-                           fmt::format("expected 2 or 3, got {}", request.radial_coefficients));
-  }
+  const cv::Size pattern = CheckIntrinsicsRequest(request);
   const std::vector<fs::path> images = ListImages(request.images_dir);
-  const vision::ChessboardDetector detector(pattern);
+  const BoardViews found = FindBoards(images, pattern);
   CalibrationReport report;
-  std::vector<vision::ChessboardView> views;
-  std::vector<std::string> skipped;
-  cv::Size image_size;
-  std::string first;
-  for (const fs::path& path : images) {
-    const cv::Mat bgr = ReadBgr(path.string());
-    const std::string name = path.filename().string();
-    if (first.empty()) {
-      image_size = bgr.size();
-      first = name;
-    } else if (bgr.size() != image_size) {
-      throw core::InputError(path.string(), 0, "",
-                             fmt::format("the image is {}, but {} is {}: every view must come from "
-                                         "the same camera at the same resolution",
-                                         SizeText(bgr.size()), first, SizeText(image_size)));
-    }
-    if (auto corners = detector.Find(bgr)) {
-      views.push_back({name, std::move(*corners)});
-    } else {
-      skipped.push_back(name);
-      report.notes.push_back(fmt::format("{}: no {} board found: skipped", name, request.board));
-    }
+  for (const std::string& name : found.skipped) {
+    report.notes.push_back(fmt::format("{}: no {} board found: skipped", name, request.board));
   }
-  if (views.empty()) {
-    throw core::InputError(
-        request.images_dir, 0, "",
-        fmt::format("no {} board found in any of the {} images (--board counts the inner corners: "
-                    "a board of 10 x 7 squares is 9x6)",
-                    request.board, images.size()));
-  }
-  if (static_cast<int>(views.size()) < vision::kMinCalibrationViews) {
-    throw core::InputError(request.images_dir, 0, "",
-                           fmt::format("the board was found in only {} of the {} images; at least "
-                                       "{} are needed (10 to 20 make a good calibration)",
-                                       views.size(), images.size(), vision::kMinCalibrationViews));
-  }
+  CheckEnoughViews(found, images.size(), request);
 
   vision::IntrinsicsCalibrationOptions options;
   options.pattern = pattern;
   options.square_m = request.square_m;
   options.radial_coefficients = request.radial_coefficients;
   const vision::IntrinsicsCalibration calibration =
-      vision::CalibrateIntrinsics(views, image_size, options);
+      vision::CalibrateIntrinsics(found.views, found.image_size, options);
   for (const vision::ViewError& view : calibration.dropped) {
     report.notes.push_back(fmt::format(
         "{}: reprojection error {:.2f} px, far above the other views': dropped (a blurred photo, "
@@ -228,78 +381,18 @@ CalibrationReport CalibrateIntrinsics(const IntrinsicsCalibrationRequest& reques
         view.name, view.rms_px));
   }
 
-  // An existing camera file keeps its name, mount and vignetting.
-  std::string name = request.camera_name;
-  camera::Mount mount = kPlaceholderMount;
-  camera::Vignetting vignetting;
-  std::error_code error;
-  if (fs::exists(request.out_path, error)) {
-    const camera::CameraModel old = io::LoadCameraFile(request.out_path);
-    name = old.name();
-    mount = old.mount();
-    vignetting = old.vignetting();
-    report.notes.push_back(
-        fmt::format("{}: intrinsics and distortion replaced; its name, mount and vignetting kept",
-                    request.out_path));
-  } else {
-    report.notes.push_back(fmt::format(
-        "{}: new camera file; its mount is a placeholder until `pirouette calibrate mount`, its "
-        "vignetting 0 until `pirouette calibrate vignetting`",
-        request.out_path));
-  }
-  const camera::Intrinsics& k = calibration.intrinsics;
-  const camera::PlumbBob& d = calibration.distortion;
-  constexpr double kPixelStep = 1e-4;
-  constexpr double kDistortionStep = 1e-7;
-  const camera::CameraModel model(name, image_size.width, image_size.height,
-                                  {Rounded(k.fx, kPixelStep), Rounded(k.fy, kPixelStep),
-                                   Rounded(k.cx, kPixelStep), Rounded(k.cy, kPixelStep)},
-                                  {Rounded(d.k1, kDistortionStep), Rounded(d.k2, kDistortionStep),
-                                   Rounded(d.p1, kDistortionStep), Rounded(d.p2, kDistortionStep),
-                                   Rounded(d.k3, kDistortionStep)},
-                                  mount, vignetting);
-  WriteCamera(request.out_path, model);
-  if (calibration.rms_px > 1.0) {
-    report.notes.push_back(fmt::format(
-        "reprojection error {:.2f} px is high (expect well under 1 px): check the photos for blur "
-        "and the board for flatness, and --square",
-        calibration.rms_px));
-  }
-  if (calibration.used.size() < 10) {
-    report.notes.push_back(fmt::format(
-        "only {} views used: 10 to 20, the board tilted differently and reaching every part of the "
-        "image, give a more reliable calibration",
-        calibration.used.size()));
+  const KeptFields kept = KeptFromCameraFile(request);
+  report.notes.push_back(kept.note);
+  WriteCamera(
+      request.out_path,
+      camera::CameraModel(kept.name, found.image_size.width, found.image_size.height,
+                          RoundedIntrinsics(calibration.intrinsics),
+                          RoundedDistortion(calibration.distortion), kept.mount, kept.vignetting));
+  for (std::string& note : IntrinsicsQualityNotes(calibration)) {
+    report.notes.push_back(std::move(note));
   }
   report.notes.push_back(fmt::format("wrote {}", request.out_path));
-
-  std::string used_views = "[";
-  for (std::size_t i = 0; i < calibration.used.size(); ++i) {
-    used_views += fmt::format(R"({}{{"image": {}, "error_px": {:.4f}}})", i == 0 ? "" : ", ",
-                              JsonString(calibration.used[i].name), calibration.used[i].rms_px);
-  }
-  used_views += "]";
-  std::string skipped_json = "[";
-  for (std::size_t i = 0; i < skipped.size(); ++i) {
-    skipped_json += (i == 0 ? "" : ", ") + JsonString(skipped[i]);
-  }
-  skipped_json += "]";
-  std::string dropped_json = "[";
-  for (std::size_t i = 0; i < calibration.dropped.size(); ++i) {
-    dropped_json +=
-        fmt::format(R"({}{{"image": {}, "error_px": {:.4f}}})", i == 0 ? "" : ", ",
-                    JsonString(calibration.dropped[i].name), calibration.dropped[i].rms_px);
-  }
-  dropped_json += "]";
-  const double distortion[5] = {d.k1, d.k2, d.p1, d.p2, d.k3};
-  report.json = fmt::format(
-      "{{\"views_used\": {}, \"views_skipped\": {}, \"views_dropped\": {}, "
-      "\"reprojection_error_px\": {:.4f}, \"fx\": {:.4f}, \"fy\": {:.4f}, \"cx\": {:.4f}, "
-      "\"cy\": {:.4f}, \"distortion\": {}, \"image_width\": {}, \"image_height\": {}, "
-      "\"views\": {}, \"camera\": {}}}\n",
-      calibration.used.size(), skipped_json, dropped_json, calibration.rms_px, k.fx, k.fy, k.cx,
-      k.cy, JsonNumbers(distortion, 5, 7), image_size.width, image_size.height, used_views,
-      JsonString(request.out_path));
+  report.json = IntrinsicsJson(request, found, calibration);
   return report;
 }
 
@@ -319,14 +412,14 @@ CalibrationReport CalibrateVignetting(const VignettingCalibrationRequest& reques
   static constexpr const char* kChannels[] = {"red", "green", "blue"};
   camera::Vignetting vignetting;
   for (std::size_t c = 0; c < 3; ++c) {
-    vignetting.k[c] = Rounded(fit->vignetting.k[c], 1e-4);
+    vignetting.k[c] = RoundTo(fit->vignetting.k[c], kVignettingDecimals);
     if (fit->clamped[c]) {
       report.notes.push_back(fmt::format(
           "{}: the {} channel's corners are brighter than its centre: k set to 0 (was the surface "
           "evenly lit?)",
           request.image_path, kChannels[c]));
     }
-    if (fit->rms_relative[c] > 0.02) {
+    if (fit->rms_relative[c] > kFlatFieldDeparture) {
       report.notes.push_back(fmt::format(
           "{}: the {} channel departs from the model by {:.1f}% RMS: the surface or its light is "
           "not uniform; the fit may be off",
@@ -335,24 +428,23 @@ CalibrationReport CalibrateVignetting(const VignettingCalibrationRequest& reques
   }
   WriteCamera(request.camera_path, WithVignetting(camera, vignetting));
   report.notes.push_back(fmt::format("wrote {} (vignetting.k)", request.camera_path));
-  report.json = fmt::format(
-      "{{\"k\": {}, \"centre_level\": {}, \"rms_relative\": {}, \"blocks_used\": {}, "
-      "\"blocks\": {}, \"camera\": {}}}\n",
-      JsonNumbers(vignetting.k.data(), 3, 4), JsonNumbers(fit->centre_level.data(), 3, 2),
-      JsonNumbers(fit->rms_relative.data(), 3, 5), fit->blocks_used, fit->blocks,
-      JsonString(request.camera_path));
+  const auto rounded = [](const std::array<double, 3>& v, int decimals) {
+    return nlohmann::ordered_json{RoundTo(v[0], decimals), RoundTo(v[1], decimals),
+                                  RoundTo(v[2], decimals)};
+  };
+  nlohmann::ordered_json json;
+  json["k"] = vignetting.k;
+  json["centre_level"] = rounded(fit->centre_level, kLevelDecimals);
+  json["rms_relative"] = rounded(fit->rms_relative, kDepartureDecimals);
+  json["blocks_used"] = fit->blocks_used;
+  json["blocks"] = fit->blocks;
+  json["camera"] = request.camera_path;
+  report.json = JsonText(json, -1);
   return report;
 }
 
 CalibrationReport CalibrateMount(const MountCalibrationRequest& request) {
-  const cv::Size pattern = ParseBoardSize(request.board, "--board");
-  CheckPositive(request.square_m, "--square", "the squares' side (metres)");
-  CheckPositive(request.board_distance_m, "--board-distance",
-                "the distance from the robot's centre to the board's centre (metres)");
-  if (!(request.board_thickness_m >= 0.0) || !std::isfinite(request.board_thickness_m)) {
-    throw core::InputError("--board-thickness", 0, "",
-                           fmt::format("must be >= 0, got {}", request.board_thickness_m));
-  }
+  const cv::Size pattern = CheckMountRequest(request);
   const camera::CameraModel camera = io::LoadCameraFile(request.camera_path);
   const cv::Mat bgr = ReadBgr(request.image_path);
   CheckCameraSize(bgr, request.image_path, camera, request.camera_path);
@@ -375,42 +467,29 @@ CalibrationReport CalibrateMount(const MountCalibrationRequest& request) {
   } catch (const std::invalid_argument& e) {
     throw core::InputError(request.image_path, 0, "", e.what());
   }
-  if (!(m.mount.height_m > 0.0) || !(std::abs(m.mount.tilt_rad) < core::DegToRad(89.99))) {
+  if (!(m.mount.height_m > 0.0) || !(std::abs(m.mount.tilt_rad) < core::DegToRad(kMaxTiltDeg))) {
     throw core::InputError(request.image_path, 0, "",
                            fmt::format("the board's pose gives a mount the camera model cannot "
                                        "hold (height {:.4f} m, tilt {:.2f} deg)",
                                        m.mount.height_m, core::RadToDeg(m.mount.tilt_rad)));
   }
   CalibrationReport report;
-  const double roll_deg = core::RadToDeg(m.roll_rad);
-  if (std::abs(roll_deg) > 2.0) {
-    report.notes.push_back(fmt::format(
-        "the camera is rolled {:.1f} deg about its axis; the camera model has no roll: level it "
-        "on the robot",
-        roll_deg));
-  }
-  if (std::abs(m.board_left_m) > 0.02) {
-    report.notes.push_back(fmt::format(
-        "the board's centre is {:.3f} m {} of the camera's forward axis: was it on the robot's "
-        "axis? (or the camera looks askew)",
-        std::abs(m.board_left_m), m.board_left_m > 0 ? "left" : "right"));
-  }
-  if (m.rms_px > 1.0) {
-    report.notes.push_back(fmt::format(
-        "the board's corners reproject {:.2f} px off: check the intrinsics (calibrate intrinsics "
-        "first) and --square",
-        m.rms_px));
-  }
-  const camera::Mount mount{Rounded(m.mount.height_m, 1e-5),
-                            core::DegToRad(Rounded(core::RadToDeg(m.mount.tilt_rad), 1e-3)),
-                            Rounded(m.mount.forward_m, 1e-5)};
+  report.notes = MountNotes(m);
+  const camera::Mount mount{
+      RoundTo(m.mount.height_m, kMountDecimals),
+      core::DegToRad(RoundTo(core::RadToDeg(m.mount.tilt_rad), kTiltDecimals)),
+      RoundTo(m.mount.forward_m, kMountDecimals)};
   WriteCamera(request.camera_path, WithMount(camera, mount));
   report.notes.push_back(fmt::format("wrote {} (mount)", request.camera_path));
-  report.json = fmt::format(
-      "{{\"height\": {:.5f}, \"tilt_deg\": {:.3f}, \"roll_deg\": {:.3f}, \"forward\": {:.5f}, "
-      "\"board_left_m\": {:.5f}, \"reprojection_error_px\": {:.4f}, \"camera\": {}}}\n",
-      m.mount.height_m, core::RadToDeg(m.mount.tilt_rad), roll_deg, m.mount.forward_m,
-      m.board_left_m, m.rms_px, JsonString(request.camera_path));
+  nlohmann::ordered_json json;
+  json["height"] = RoundTo(m.mount.height_m, kMountDecimals);
+  json["tilt_deg"] = RoundTo(core::RadToDeg(m.mount.tilt_rad), kTiltDecimals);
+  json["roll_deg"] = RoundTo(core::RadToDeg(m.roll_rad), kRollDecimals);
+  json["forward"] = RoundTo(m.mount.forward_m, kMountDecimals);
+  json["board_left_m"] = RoundTo(m.board_left_m, kBoardOffsetDecimals);
+  json["reprojection_error_px"] = RoundTo(m.rms_px, kErrorDecimals);
+  json["camera"] = request.camera_path;
+  report.json = JsonText(json, -1);
   return report;
 }
 

@@ -21,7 +21,9 @@
 #include "pirouette/io/camera_file.h"
 #include "pirouette/io/image_io.h"
 #include "pirouette/io/video_source.h"
+#include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/run/stage_timer.h"
+#include "pirouette/tools/json_output.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::tools {
@@ -55,10 +57,102 @@ void WriteProfiles(const std::string& out_dir, const std::vector<CaptureFrame>& 
   io::WriteFileAtomically((fs::path(out_dir) / "profiles.jsonl").string(), text);
 }
 
-// `v` to `digits` decimals, as the nearest double (so that it prints short).
-double Round(double v, int digits) {
-  const double scale = std::pow(10.0, digits);
-  return std::round(v * scale) / scale;
+void CheckCaptureRequest(const LiveCaptureRequest& request) {
+  if (request.every < 1) throw core::InputError("", 0, "every", "must be 1 or more");
+  if (request.max_frames && *request.max_frames < 0) {
+    throw core::InputError("", 0, "frames", "must be 0 (no limit) or more");
+  }
+  if (request.max_range_m && !(*request.max_range_m > 0.0)) {
+    throw core::InputError("", 0, "max-range", "must be a positive number of metres");
+  }
+}
+
+// With a camera file: the camera and the extractor of its frames' profiles.
+struct CaptureCamera {
+  std::optional<camera::CameraModel> camera;
+  std::optional<vision::ProfileExtractor> extractor;
+};
+
+CaptureCamera LoadCaptureCamera(const LiveCaptureRequest& request) {
+  CaptureCamera loaded;
+  if (request.camera_path.empty()) return loaded;
+  loaded.camera = io::LoadCameraFile(request.camera_path);
+  const double max_range =
+      request.max_range_m.value_or(camera::MaxRange(*loaded.camera, mapping::kSmallRobotCellM));
+  loaded.extractor.emplace(camera::InversePerspectiveMap(*loaded.camera), max_range);
+  return loaded;
+}
+
+// The output folder, made at the first write so that refused input leaves none.
+class OutFolder {
+ public:
+  explicit OutFolder(std::string dir) : dir_(std::move(dir)) {}
+  void Prepare() {
+    if (!ready_) PrepareOutDir(dir_);
+    ready_ = true;
+  }
+
+ private:
+  std::string dir_;
+  bool ready_ = false;
+};
+
+// Why the capture stops before reading another frame, if it does.
+std::optional<CaptureStop> StopBeforeFrame(const LiveCaptureRequest& request, int limit,
+                                           std::size_t frames_used) {
+  if (limit > 0 && static_cast<int>(frames_used) >= limit) return CaptureStop::kFrameLimit;
+  if (request.stop_requested != nullptr && request.stop_requested->load()) {
+    return CaptureStop::kInterrupted;
+  }
+  return std::nullopt;
+}
+
+// Refuses a frame of another size than the camera's, keeping the summary of
+// the frames used so far.
+void CheckFrameSize(const cv::Mat3b& bgr, int index, const LiveCaptureRequest& request,
+                    const CaptureCamera& camera, const std::string& source,
+                    const std::vector<CaptureFrame>& frames) {
+  if (!camera.camera ||
+      (bgr.cols == camera.camera->width() && bgr.rows == camera.camera->height())) {
+    return;
+  }
+  if (!frames.empty()) WriteProfiles(request.out_dir, frames);
+  throw core::InputError(
+      source, 0, "",
+      fmt::format("frame {} is {}×{} but the camera {} is {}×{}", index, bgr.cols, bgr.rows,
+                  request.camera_path, camera.camera->width(), camera.camera->height()));
+}
+
+// Segments one frame used (and reads its profile) and writes its overlay.
+// `reference` is the reference region's mask at the frame's size.
+CaptureFrame CaptureOne(const cv::Mat3b& bgr, int index, vision::FloorSegmenter& segmenter,
+                        const CaptureCamera& camera, const cv::Mat1b& reference,
+                        const std::string& out_dir, OutFolder& out) {
+  const Clock::time_point t0 = Clock::now();
+  const cv::Mat1b mask = segmenter.Segment(bgr);
+  std::optional<core::ObstacleProfile> profile;
+  if (camera.extractor) profile = camera.extractor->Extract(mask);
+  CaptureFrame frame;
+  frame.seconds = run::Seconds(Clock::now() - t0);
+  frame.index = index;
+  frame.image = fmt::format("{:06d}.png", index);
+  frame.floor_fraction = static_cast<double>(cv::countNonZero(mask)) / bgr.size().area();
+  const int reference_pixels = cv::countNonZero(reference);
+  frame.reference_fraction =
+      reference_pixels > 0
+          ? static_cast<double>(cv::countNonZero(mask & reference)) / reference_pixels
+          : 0.0;
+  if (profile) frame.counts = core::CountReadings(*profile);
+
+  const std::vector<int> rows =
+      profile ? draw::ReadingRows(*profile, *camera.camera) : std::vector<int>();
+  out.Prepare();
+  io::WritePng(
+      (fs::path(out_dir) / frame.image).string(),
+      draw::DrawCaptureOverlay(
+          bgr, mask, {frame.index, frame.floor_fraction, frame.reference_fraction, frame.counts},
+          profile, rows));
+  return frame;
 }
 
 }  // namespace
@@ -78,42 +172,24 @@ std::string_view CaptureStopName(CaptureStop stop) {
 LiveCaptureResult RunLiveCapture(const LiveCaptureRequest& request,
                                  const std::function<void(const LiveCaptureProgress&)>& on_frame) {
   const Clock::time_point start = Clock::now();
-  if (request.every < 1) throw core::InputError("", 0, "every", "must be 1 or more");
-  if (request.max_frames && *request.max_frames < 0) {
-    throw core::InputError("", 0, "frames", "must be 0 (no limit) or more");
-  }
-  if (request.max_range_m && !(*request.max_range_m > 0.0)) {
-    throw core::InputError("", 0, "max-range", "must be a positive number of metres");
-  }
+  CheckCaptureRequest(request);
   const io::VideoSource source = io::ParseVideoSource(request.source);
-  std::optional<camera::CameraModel> camera;
-  std::optional<vision::ProfileExtractor> extractor;
+  const CaptureCamera camera = LoadCaptureCamera(request);
   LiveCaptureResult result;
-  if (!request.camera_path.empty()) {
-    camera = io::LoadCameraFile(request.camera_path);
-    result.max_range_m = request.max_range_m.value_or(camera::MaxRange(*camera, 0.01));
-    extractor.emplace(camera::InversePerspectiveMap(*camera), *result.max_range_m);
-  }
+  if (camera.extractor) result.max_range_m = camera.extractor->max_range_m();
   cv::VideoCapture capture = io::OpenVideoSource(source);
-  bool out_ready = false;  // the folder is made before the first write: not for refused input
-  const auto prepare_out = [&] {
-    if (!out_ready) PrepareOutDir(request.out_dir);
-    out_ready = true;
-  };
+  OutFolder out(request.out_dir);
 
   const int limit = request.max_frames.value_or(source.live() ? kLiveDefaultFrames : 0);
   const std::unique_ptr<vision::FloorSegmenter> segmenter =
-      vision::MakeFloorSegmenter(request.method, camera);
+      vision::MakeFloorSegmenter(request.method, camera.camera);
   cv::Mat1b reference;  // the reference region of the current frame size
   Clock::time_point last_flush = start;
   cv::Mat raw;
   for (int index = 0;; ++index) {
-    if (limit > 0 && static_cast<int>(result.frames.size()) >= limit) {
-      result.stop = CaptureStop::kFrameLimit;
-      break;
-    }
-    if (request.stop_requested != nullptr && request.stop_requested->load()) {
-      result.stop = CaptureStop::kInterrupted;
+    if (const std::optional<CaptureStop> stop =
+            StopBeforeFrame(request, limit, result.frames.size())) {
+      result.stop = *stop;
       break;
     }
     if (!capture.grab()) break;
@@ -122,42 +198,12 @@ LiveCaptureResult RunLiveCapture(const LiveCaptureRequest& request,
     if (!capture.retrieve(raw) || raw.empty()) break;
     const cv::Mat3b bgr = io::ToBgrFrame(raw, source.name);
     if (result.frames.empty()) result.frame_size = bgr.size();
-    if (camera && (bgr.cols != camera->width() || bgr.rows != camera->height())) {
-      if (!result.frames.empty()) WriteProfiles(request.out_dir, result.frames);
-      throw core::InputError(
-          source.name, 0, "",
-          fmt::format("frame {} is {}×{} but the camera {} is {}×{}", index, bgr.cols, bgr.rows,
-                      request.camera_path, camera->width(), camera->height()));
-    }
+    CheckFrameSize(bgr, index, request, camera, source.name, result.frames);
     if (reference.size() != bgr.size()) {
       reference = vision::ReferenceRegionMask(bgr.size(), vision::ReferenceRegion{});
     }
-
-    const Clock::time_point t0 = Clock::now();
-    const cv::Mat1b mask = segmenter->Segment(bgr);
-    std::optional<core::ObstacleProfile> profile;
-    if (extractor) profile = extractor->Extract(mask);
-    CaptureFrame frame;
-    frame.seconds = run::Seconds(Clock::now() - t0);
-    frame.index = index;
-    frame.image = fmt::format("{:06d}.png", index);
-    frame.floor_fraction = static_cast<double>(cv::countNonZero(mask)) / bgr.size().area();
-    const int reference_pixels = cv::countNonZero(reference);
-    frame.reference_fraction =
-        reference_pixels > 0
-            ? static_cast<double>(cv::countNonZero(mask & reference)) / reference_pixels
-            : 0.0;
-    if (profile) frame.counts = core::CountReadings(*profile);
-
-    const std::vector<int> rows =
-        profile ? draw::ReadingRows(*profile, *camera) : std::vector<int>();
-    prepare_out();
-    io::WritePng(
-        (fs::path(request.out_dir) / frame.image).string(),
-        draw::DrawCaptureOverlay(
-            bgr, mask, {frame.index, frame.floor_fraction, frame.reference_fraction, frame.counts},
-            profile, rows));
-    result.frames.push_back(std::move(frame));
+    result.frames.push_back(
+        CaptureOne(bgr, index, *segmenter, camera, reference, request.out_dir, out));
     if (run::Seconds(Clock::now() - last_flush) >= kProfilesFlushSeconds) {
       WriteProfiles(request.out_dir, result.frames);
       last_flush = Clock::now();
@@ -170,7 +216,7 @@ LiveCaptureResult RunLiveCapture(const LiveCaptureRequest& request,
   if (result.frames_read == 0 && result.stop == CaptureStop::kEnd) {
     throw core::InputError(source.name, 0, "", "no frame could be read from it");
   }
-  prepare_out();
+  out.Prepare();
   WriteProfiles(request.out_dir, result.frames);
   result.wall_time_s = run::Seconds(Clock::now() - start);
   return result;
@@ -180,17 +226,17 @@ std::string CaptureFrameJson(const CaptureFrame& frame) {
   nlohmann::ordered_json line;
   line["frame"] = frame.index;
   line["image"] = frame.image;
-  line["floor_fraction"] = Round(frame.floor_fraction, 4);
-  line["reference_fraction"] = Round(frame.reference_fraction, 4);
+  line["floor_fraction"] = RoundTo(frame.floor_fraction, 4);
+  line["reference_fraction"] = RoundTo(frame.reference_fraction, 4);
   if (frame.counts) {
     line["hit"] = frame.counts->hit;
     line["clear"] = frame.counts->clear;
     line["blind"] = frame.counts->blind;
     line["nearest_hit_m"] = frame.counts->nearest_hit_m
-                                ? nlohmann::ordered_json(Round(*frame.counts->nearest_hit_m, 4))
+                                ? nlohmann::ordered_json(RoundTo(*frame.counts->nearest_hit_m, 4))
                                 : nlohmann::ordered_json(nullptr);
   }
-  line["seconds"] = Round(frame.seconds, 5);
+  line["seconds"] = RoundTo(frame.seconds, 5);
   return line.dump();
 }
 
@@ -224,18 +270,18 @@ std::string LiveCaptureSummaryJson(const LiveCaptureRequest& request,
       blind += f.counts->blind;
     }
   }
-  summary["mean_floor_fraction"] = Round(floor / n, 4);
-  summary["mean_reference_fraction"] = Round(reference / n, 4);
+  summary["mean_floor_fraction"] = RoundTo(floor / n, 4);
+  summary["mean_reference_fraction"] = RoundTo(reference / n, 4);
   if (result.max_range_m) {
-    summary["max_range_m"] = Round(*result.max_range_m, 4);
-    summary["mean_hit"] = Round(hit / n, 1);
-    summary["mean_clear"] = Round(clear / n, 1);
-    summary["mean_blind"] = Round(blind / n, 1);
+    summary["max_range_m"] = RoundTo(*result.max_range_m, 4);
+    summary["mean_hit"] = RoundTo(hit / n, 1);
+    summary["mean_clear"] = RoundTo(clear / n, 1);
+    summary["mean_blind"] = RoundTo(blind / n, 1);
   }
-  summary["seconds_per_frame"] = Round(seconds / n, 5);
-  summary["wall_time_s"] = Round(result.wall_time_s, 3);
+  summary["seconds_per_frame"] = RoundTo(seconds / n, 5);
+  summary["wall_time_s"] = RoundTo(result.wall_time_s, 3);
   summary["out"] = request.out_dir;
-  return summary.dump(2) + "\n";
+  return JsonText(summary, 2);
 }
 
 }  // namespace pirouette::tools

@@ -11,7 +11,8 @@
 namespace pirouette::tools {
 
 // What `pirouette explore-eval` was asked: whole explorations of worlds with
-// several seeds and planners, for the README's table (issue 4, "Measured").
+// several seeds and planners, for the table of docs/measurements.md,
+// "Exploration maps".
 struct ExploreEvalRequest {
   std::vector<std::string> world_paths;
   std::vector<std::uint64_t> seeds = {1, 2, 3, 4, 5};

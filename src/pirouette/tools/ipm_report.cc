@@ -4,13 +4,42 @@
 
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <vector>
 
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/camera_file.h"
+#include "pirouette/tools/json_output.h"
 
 namespace pirouette::tools {
+namespace {
+
+std::string IpmReportJson(const camera::CameraModel& camera, double cell_m, double max_range_m,
+                          const std::optional<camera::RangeInterval>& measurable,
+                          const std::vector<camera::RangeError>& table) {
+  nlohmann::ordered_json json;
+  json["camera"] = camera.name();
+  json["column"] = camera.intrinsics().cx;
+  json["cell_m"] = cell_m;
+  json["max_range_m"] = RoundTo(max_range_m, 4);
+  if (measurable) {
+    json["measurable_m"] = {RoundTo(measurable->near_m, 4), RoundTo(measurable->far_m, 4)};
+  }
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  for (const camera::RangeError& e : table) {
+    rows.push_back({{"range_m", RoundTo(e.range_m, 3)},
+                    {"row", RoundTo(e.row, 2)},
+                    {"nearer_m", RoundTo(e.nearer_m, 5)},
+                    {"farther_m", RoundTo(e.farther_m, 5)}});
+  }
+  json["table"] = std::move(rows);
+  return JsonText(json, 2);
+}
+
+}  // namespace
 
 std::string IpmReport(const IpmReportRequest& request) {
   if (!(request.cell_m > 0.0) || !std::isfinite(request.cell_m)) {
@@ -24,27 +53,8 @@ std::string IpmReport(const IpmReportRequest& request) {
   const std::optional<camera::RangeInterval> measurable = camera::MeasurableRanges(camera);
   const std::vector<camera::RangeError> table =
       camera::RangeErrorTable(camera, request.step_m, std::max(1.0, 2.0 * max_range));
+  if (request.json) return IpmReportJson(camera, request.cell_m, max_range, measurable, table);
   std::string out;
-  if (request.json) {
-    out += fmt::format(
-        "{{\n  \"camera\": \"{}\",\n  \"column\": {},\n  \"cell_m\": {},\n  \"max_range_m\": "
-        "{:.4f},\n",
-        camera.name(), camera.intrinsics().cx, request.cell_m, max_range);
-    if (measurable) {
-      out += fmt::format("  \"measurable_m\": [{:.4f}, {:.4f}],\n", measurable->near_m,
-                         measurable->far_m);
-    }
-    out += "  \"table\": [";
-    for (std::size_t i = 0; i < table.size(); ++i) {
-      const camera::RangeError& e = table[i];
-      out += fmt::format(
-          "{}\n    {{\"range_m\": {:.3f}, \"row\": {:.2f}, \"nearer_m\": {:.5f}, \"farther_m\": "
-          "{:.5f}}}",
-          i == 0 ? "" : ",", e.range_m, e.row, e.nearer_m, e.farther_m);
-    }
-    out += "\n  ]\n}\n";
-    return out;
-  }
   out += fmt::format(
       "camera {}: {}x{} px, fy {:.1f} px, {:.3f} m above the floor, tilted {:.1f} deg down, "
       "{:.3f} m ahead of the centre\n",

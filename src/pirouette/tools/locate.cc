@@ -30,6 +30,57 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The map's colour layer as LocateRequest::colours_path says; result.colours_path
+// names the file read (empty: none).
+localize::ColourMap LoadColours(const LocateRequest& request, const mapping::TrinaryMap& map,
+                                LocateResult& result) {
+  if (!request.use_colours) return {};
+  result.colours_path =
+      request.colours_path.empty() ? io::ColourMapPathFor(request.map_path) : request.colours_path;
+  if (!request.colours_path.empty() || std::filesystem::exists(result.colours_path)) {
+    return io::ReadColourMap(result.colours_path, map.geometry);
+  }
+  result.colours_path.clear();
+  return {};
+}
+
+// The place table of result.table_path when it was made for this map and
+// settings, else one built and written there (result.table_loaded,
+// result.table_replaced say which).
+localize::PlaceTable LoadOrBuildTable(const LocateRequest& request, const mapping::TrinaryMap& map,
+                                      const localize::ColourMap& colours, double radius_m,
+                                      LocateResult& result) {
+  const std::string name =
+      localize::MapTableName(map, colours, radius_m, result.spacing_m, result.max_range_m);
+  localize::PlaceTable table;
+  if (std::filesystem::exists(result.table_path)) {
+    table = io::LoadPlaceTable(result.table_path);
+    result.table_loaded = table.world() == name && !table.entries().empty();
+    result.table_replaced = !result.table_loaded;
+  }
+  if (!result.table_loaded) {
+    table =
+        localize::BuildMapPlaceTable(map, colours, radius_m, result.spacing_m, result.max_range_m);
+    if (table.entries().empty()) {
+      throw core::InputError(request.map_path, 0, "",
+                             "the map has no free place where the robot fits");
+    }
+    io::SavePlaceTable(table, result.table_path);
+  }
+  return table;
+}
+
+// How far the trial's answer lies from its truth, and whether it is right.
+void Judge(const LocateRequest& request, double coarse_cell_m, localize::LocateTrial& trial) {
+  trial.position_error_m =
+      (trial.answer.world_T_robot.translation() - trial.truth.translation()).norm();
+  trial.heading_error_deg = std::abs(core::RadToDeg(
+      core::NormalizeAngle(trial.answer.world_T_robot.heading() - trial.truth.heading())));
+  const bool close = trial.position_error_m <= coarse_cell_m &&
+                     trial.heading_error_deg <= request.options.heading_tolerance_deg;
+  trial.right = trial.answer.found && close;
+}
+
 }  // namespace
 
 LocateResult RunLocate(const LocateRequest& request) {
@@ -48,65 +99,33 @@ LocateResult RunLocate(const LocateRequest& request) {
           ? (std::filesystem::path(request.map_path).parent_path() / "places.yaml").string()
           : request.table_path;
   if (request.pose) sim::PlaceRobot(world, *request.pose, "--pose");  // throws when it does not fit
-  localize::ColourMap colours;
-  if (request.use_colours) {
-    result.colours_path = request.colours_path.empty() ? io::ColourMapPathFor(request.map_path)
-                                                       : request.colours_path;
-    if (!request.colours_path.empty() || std::filesystem::exists(result.colours_path)) {
-      colours = io::ReadColourMap(result.colours_path, map.geometry);
-    } else {
-      result.colours_path.clear();
-    }
-  }
+  const localize::ColourMap colours = LoadColours(request, map, result);
 
   const auto table_start = Clock::now();
-  const std::string name = localize::MapTableName(map, colours, world.robot().radius,
-                                                  result.spacing_m, result.max_range_m);
-  localize::PlaceTable table;
-  if (std::filesystem::exists(result.table_path)) {
-    table = io::LoadPlaceTable(result.table_path);
-    result.table_loaded = table.world() == name && !table.entries().empty();
-    result.table_replaced = !result.table_loaded;
-  }
-  if (!result.table_loaded) {
-    table = localize::BuildMapPlaceTable(map, colours, world.robot().radius, result.spacing_m,
-                                         result.max_range_m);
-    if (table.entries().empty()) {
-      throw core::InputError(request.map_path, 0, "",
-                             "the map has no free place where the robot fits");
-    }
-    io::SavePlaceTable(table, result.table_path);
-  }
+  const localize::PlaceTable table =
+      LoadOrBuildTable(request, map, colours, world.robot().radius, result);
   result.table_s = run::Seconds(Clock::now() - table_start);
   result.table_places = static_cast<int>(table.entries().size());
 
   const std::vector<core::Pose2> truths =
       request.pose ? std::vector<core::Pose2>{*request.pose}
                    : sim::RandomRobotPoses(world, request.random, request.seed, request.world_path);
-
   eval::PlaceObserver observer(world, request.method, result.max_range_m, request.seed);
   run::ProgressLine line(request.quiet);
   const auto start = Clock::now();
   double locate_s = 0.0;
   for (std::size_t q = 0; q < truths.size(); ++q) {
-    const localize::ObservedPlace seen = observer.Observe(truths[q], request.seed * 7919 + q);
-    const auto t0 = Clock::now();
     localize::LocateTrial trial;
     trial.truth = truths[q];
-    trial.seen = seen;
-    trial.answer = localize::Locate(map, colours, table, seen.view, seen.kinds, result.spacing_m,
-                                    result.coarse_cell_m, request.options);
+    trial.seen = observer.Observe(truths[q], QuerySeed(request.seed, q));
+    const auto t0 = Clock::now();
+    trial.answer = localize::Locate(map, colours, table, trial.seen.view, trial.seen.kinds,
+                                    result.spacing_m, result.coarse_cell_m, request.options);
     locate_s += run::Seconds(Clock::now() - t0);
-    trial.position_error_m =
-        (trial.answer.world_T_robot.translation() - trial.truth.translation()).norm();
-    trial.heading_error_deg = std::abs(core::RadToDeg(
-        core::NormalizeAngle(trial.answer.world_T_robot.heading() - trial.truth.heading())));
-    const bool close = trial.position_error_m <= result.coarse_cell_m &&
-                       trial.heading_error_deg <= request.options.heading_tolerance_deg;
-    trial.right = trial.answer.found && close;
+    Judge(request, result.coarse_cell_m, trial);
     result.found_right += trial.right ? 1 : 0;
     result.cannot_tell += trial.answer.found ? 0 : 1;
-    result.wrong += trial.answer.found && !close ? 1 : 0;
+    result.wrong += trial.answer.found && !trial.right ? 1 : 0;
     result.trials.push_back(std::move(trial));
     line.Show(run::Seconds(Clock::now() - start), [&] {
       return fmt::format("locate {}: {}/{} pirouettes, {} found right, {} cannot tell, {} wrong",

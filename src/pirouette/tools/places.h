@@ -47,12 +47,29 @@ struct SignatureScore {
   double mean_heading_error_deg = 0.0;  // over right places, where the signature gives headings
 };
 
+// A recovered heading this close to the truth is right (docs/measurements.md,
+// "Place recognition"): ten of the profile's 1° bins, a third of the turn
+// between a pirouette's frames; wider would count a twin place's heading.
 inline constexpr double kHeadingToleranceDeg = 10.0;
 // A query whose ROP hits something in fewer bins than this (a tenth of the
 // bearings) sees too little to tell a place by; the report gives the rates
 // over the other queries too.
 inline constexpr int kInformativeBins = 36;
+// The refinement searches this many table spacings around a matched place:
+// more than half a spacing, so that a query between two places reaches the
+// true one from either; wider costs search time and reaches look-alike
+// neighbours.
 inline constexpr double kSearchRadiusSpacings = 0.75;
+
+// The noise seed of query `q`'s pirouette in a run seeded `seed`. The stride
+// is larger than the queries a run makes (100 in docs/measurements.md,
+// "Place recognition" and 20 in "Kidnapped robot"), so runs with different
+// seeds never share a pirouette's noise (any stride above the query count
+// would; a prime is the customary choice).
+inline constexpr std::uint64_t kQuerySeedStride = 7919;
+inline std::uint64_t QuerySeed(std::uint64_t seed, std::size_t q) {
+  return seed * kQuerySeedStride + q;
+}
 
 // One query: where the robot truly was and what each signature answered.
 struct PlaceQuery {
@@ -89,8 +106,7 @@ struct PlacesResult {
 // request.table_path when that file exists, and saves the table there when it
 // does not), then queries it from request.queries random poses where the
 // robot fits, with random headings (RandomRobotPoses with request.seed). For
-// each signature, the
-// place is right when the best entry lies within one coarse cell of the
+// each signature, the place is right when the best entry lies within one coarse cell of the
 // truly nearest entry's distance from the true position (|e − p| ≤
 // min_e' |e' − p| + coarse cell), and the heading is right when, besides,
 // the recovered heading is within kHeadingToleranceDeg of the truth (for the

@@ -10,19 +10,19 @@
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/draw/radial_profile_plot.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::tools {
 namespace {
 
 namespace fs = std::filesystem;
 
-RopRequest TruthRequest(double heading_deg) {
+// The plot goes into `dir`.
+RopRequest TruthRequest(const testing::TempDir& dir, double heading_deg) {
   RopRequest request;
   request.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml";
   request.world_T_robot = core::Pose2(0.75, 0.65, core::DegToRad(heading_deg));
-  request.out_path =
-      (fs::temp_directory_path() / ("pirouette_rop_test_" + std::to_string(::getpid()) + ".png"))
-          .string();
+  request.out_path = dir / "rop.png";
   request.method = vision::MaskSource::kTruth;
   return request;
 }
@@ -36,10 +36,10 @@ double Median(std::vector<double> values) {
 // the world's geometry puts an obstacle within the max range, the ROP reads
 // it (away from the obstacles' silhouettes, which the camera sees slanted).
 TEST(RopTest, TruthMasksGiveTheWorldsProfile) {
-  const RopRequest request = TruthRequest(0.0);
+  const testing::TempDir dir("pirouette_rop_test");
+  const RopRequest request = TruthRequest(dir, 0.0);
   const RopResult result = MakeRop(request);
   ASSERT_TRUE(fs::exists(request.out_path));
-  fs::remove(request.out_path);
   ASSERT_EQ(result.rop.bins.size(), 360u);
   ASSERT_EQ(result.low_pass.size(), 360u);
   ASSERT_EQ(result.truth.size(), 360u);
@@ -54,8 +54,9 @@ TEST(RopTest, TruthMasksGiveTheWorldsProfile) {
 // The same place, the pirouette started 90° further round: the ROP, in the
 // odometry frame (the world's at the start), is the same.
 TEST(RopTest, RotatedPirouetteGivesTheSameWorldProfile) {
-  const RopResult a = MakeRop(TruthRequest(0.0));
-  const RopResult b = MakeRop(TruthRequest(90.0));
+  const testing::TempDir dir("pirouette_rop_test");
+  const RopResult a = MakeRop(TruthRequest(dir, 0.0));
+  const RopResult b = MakeRop(TruthRequest(dir, 90.0));
   std::vector<double> differences;
   int same_kind = 0;
   for (std::size_t i = 0; i < 360; ++i) {
@@ -67,7 +68,8 @@ TEST(RopTest, RotatedPirouetteGivesTheSameWorldProfile) {
 }
 
 TEST(RopTest, PoseWhereTheRobotDoesNotFitIsRefused) {
-  RopRequest request = TruthRequest(0.0);
+  const testing::TempDir dir("pirouette_rop_test");
+  RopRequest request = TruthRequest(dir, 0.0);
   request.world_T_robot = core::Pose2(0.75, 0.45, 0.0);  // inside the yellow box
   EXPECT_THROW(MakeRop(request), core::InputError);
   request.world_T_robot = core::Pose2(5.0, 0.45, 0.0);  // off the floor

@@ -2,15 +2,17 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
-#include <numbers>
+#include <nlohmann/json.hpp>
 
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/camera/range_resolution.h"
+#include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/draw/floor_overlay.h"
 #include "pirouette/io/camera_file.h"
 #include "pirouette/io/image_io.h"
+#include "pirouette/mapping/occupancy_grid.h"
+#include "pirouette/tools/json_output.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::tools {
@@ -35,7 +37,8 @@ SegmentImageResult SegmentImage(const SegmentImageRequest& request) {
   result.floor_mask = segmenter->Segment(bgr);
   if (camera) {
     const camera::InversePerspectiveMap ipm(*camera);
-    const double max_range = request.max_range_m.value_or(camera::MaxRange(*camera, 0.01));
+    const double max_range =
+        request.max_range_m.value_or(camera::MaxRange(*camera, mapping::kSmallRobotCellM));
     result.profile = vision::ExtractProfile(result.floor_mask, ipm, max_range);
   }
   if (!request.mask_path.empty()) io::WritePng(request.mask_path, result.floor_mask);
@@ -46,19 +49,16 @@ SegmentImageResult SegmentImage(const SegmentImageRequest& request) {
 }
 
 std::string ObstacleProfileJson(const core::ObstacleProfile& profile) {
-  std::string out =
-      fmt::format("{{\n  \"max_range_m\": {:.4f},\n  \"readings\": [", profile.max_range_m);
-  for (std::size_t i = 0; i < profile.readings.size(); ++i) {
-    const core::RangeReading& r = profile.readings[i];
-    const char* kind = r.kind == core::ReadingKind::kHit     ? "hit"
-                       : r.kind == core::ReadingKind::kClear ? "clear"
-                                                             : "blind";
-    out +=
-        fmt::format("{}\n    {{\"bearing_deg\": {:.3f}, \"range_m\": {:.4f}, \"kind\": \"{}\"}}",
-                    i == 0 ? "" : ",", r.bearing_rad * 180.0 / std::numbers::pi, r.range_m, kind);
+  nlohmann::ordered_json readings = nlohmann::ordered_json::array();
+  for (const core::RangeReading& r : profile.readings) {
+    readings.push_back({{"bearing_deg", RoundTo(core::RadToDeg(r.bearing_rad), 3)},
+                        {"range_m", RoundTo(r.range_m, 4)},
+                        {"kind", ReadingKindName(r.kind)}});
   }
-  out += "\n  ]\n}\n";
-  return out;
+  nlohmann::ordered_json json;
+  json["max_range_m"] = RoundTo(profile.max_range_m, 4);
+  json["readings"] = std::move(readings);
+  return JsonText(json, 2);
 }
 
 }  // namespace pirouette::tools

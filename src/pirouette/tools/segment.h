@@ -32,9 +32,10 @@ struct SegmentImageResult {
 // when an output cannot be written (exit 1).
 SegmentImageResult SegmentImage(const SegmentImageRequest& request);
 
-// The profile as JSON: {"max_range_m": …, "readings": [{"bearing_deg": …,
-// "range_m": …, "kind": "hit" | "clear" | "blind"}, …]}, one reading per
-// image column, left to right.
+// The profile as indented JSON ending in a newline: {"max_range_m": …,
+// "readings": [{"bearing_deg": …, "range_m": …, "kind": "hit" | "clear" |
+// "blind"}, …]}, one reading per image column, left to right; metres to 4
+// decimals, degrees to 3.
 std::string ObstacleProfileJson(const core::ObstacleProfile& profile);
 
 }  // namespace pirouette::tools

@@ -14,8 +14,8 @@
 namespace pirouette::vision {
 namespace {
 
-const cv::Size kPattern(9, 6);
-constexpr double kSquare = 0.02;
+const cv::Size kMountPattern(9, 6);
+constexpr double kMountSquareM = 0.02;
 
 // Where the camera sees the board's inner corners (ChessboardObjectPoints'
 // order) when the board lies `surface` above the floor with its centre
@@ -26,7 +26,7 @@ std::vector<cv::Point2f> SeenCorners(const camera::CameraModel& camera, double d
   std::normal_distribution<double> noise(0.0, sigma);
   const Eigen::Isometry3d camera_T_robot = camera.robot_T_camera().inverse();
   std::vector<cv::Point2f> corners;
-  for (const cv::Point3f& p : ChessboardObjectPoints(kPattern, kSquare)) {
+  for (const cv::Point3f& p : ChessboardObjectPoints(kMountPattern, kMountSquareM)) {
     const Eigen::Vector3d p_robot(distance + std::cos(yaw) * p.x - std::sin(yaw) * p.y,
                                   std::sin(yaw) * p.x + std::cos(yaw) * p.y, surface);
     const auto pixel = camera.Project(camera_T_robot * p_robot);
@@ -39,8 +39,8 @@ std::vector<cv::Point2f> SeenCorners(const camera::CameraModel& camera, double d
 
 MountCalibrationOptions Options(double distance) {
   MountCalibrationOptions options;
-  options.pattern = kPattern;
-  options.square_m = kSquare;
+  options.pattern = kMountPattern;
+  options.square_m = kMountSquareM;
   options.board_distance_m = distance;
   return options;
 }

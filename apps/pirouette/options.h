@@ -1,0 +1,93 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pirouette::cli {
+
+// The options several subcommands share, each declared here once: its name,
+// its one help text and how it is read. Where the commands differ in what an
+// option is for or what its default is, the caller passes that as a phrase.
+//
+// `default_note`: empty where the option's variable holds its default (shown
+// as "=VALUE" in --help); else the help ends "(default: NOTE)" and no value
+// is shown, for defaults decided later (the camera's, the log's).
+
+// The choices of --method: a floor segmenter (vision::SegmentationMethod), or
+// a segmenter or the simulator's truth (vision::MaskSource).
+inline const std::vector<std::string> kSegmentationMethods = {"default", "paper"};
+inline const std::vector<std::string> kMaskSources = {"default", "paper", "truth"};
+
+// --method: the floor segmentation, one of `choices` (refused otherwise).
+CLI::Option* AddMethodOption(CLI::App* app, std::string& method,
+                             const std::vector<std::string>& choices,
+                             std::string_view default_note = {});
+
+// --seed: `seeds` says what it seeds ("the simulator's noise (camera and
+// odometry)").
+CLI::Option* AddSeedOption(CLI::App* app, std::uint64_t& seed, std::string_view seeds);
+
+// --quiet: no progress on standard error.
+CLI::Option* AddQuietOption(CLI::App* app, bool& quiet);
+
+// --out, the folder a run writes its outputs to.
+CLI::Option* AddOutFolderOption(CLI::App* app, std::string& dir);
+// --out, a PNG to write; `what` says what it shows.
+CLI::Option* AddOutPngOption(CLI::App* app, std::string& path, std::string_view what);
+// --out, a file for the JSON report, written atomically.
+CLI::Option* AddReportOption(CLI::App* app, std::string& path);
+
+// --world, one world file; `role` (may be empty) says what it is for here.
+CLI::Option* AddWorldOption(CLI::App* app, std::string& path, std::string_view role = {});
+// --world, repeated: one or more world files.
+CLI::Option* AddWorldsOption(CLI::App* app, std::vector<std::string>& paths);
+
+// --camera, a camera file; `role` (may be empty) says what it is for here.
+CLI::Option* AddCameraOption(CLI::App* app, std::string& path, std::string_view role = {});
+
+// --image, a photo to read; `what` (may be empty) says what it must show.
+CLI::Option* AddImageOption(CLI::App* app, std::string& path, std::string_view what = {});
+
+// --cell: the map's cell, metres, from which the default maximum range follows.
+CLI::Option* AddCellOption(CLI::App* app, double& cell_m, std::string_view default_note = {});
+
+// --max-range: how far the obstacle profiles are read, metres. Either a
+// value whose 0 means the default, or an optional left empty unless given.
+CLI::Option* AddMaxRangeOption(CLI::App* app, double& max_range_m, std::string_view default_note);
+CLI::Option* AddMaxRangeOption(CLI::App* app, std::optional<double>& max_range_m,
+                               std::string_view default_note);
+
+// --radius: the robot's radius, metres (0: the default).
+CLI::Option* AddRadiusOption(CLI::App* app, double& radius_m, std::string_view default_note);
+
+// --pose X,Y,HEADING as given (cli::ParsePose reads it once the command
+// runs); `role` (may be empty) says whose pose it is.
+CLI::Option* AddPoseOption(CLI::App* app, std::string& text, std::string_view role = {});
+
+// --localize: pose tracking, scan or none.
+CLI::Option* AddLocalizeOption(CLI::App* app, std::string& kind,
+                               std::string_view default_note = {});
+
+// --planner: one planner, or several (comma separated).
+CLI::Option* AddPlannerOption(CLI::App* app, std::string& planner);
+CLI::Option* AddPlannersOption(CLI::App* app, std::vector<std::string>& planners);
+
+// --max-steps: the straight moves a run may make.
+CLI::Option* AddMaxStepsOption(CLI::App* app, int& max_steps);
+
+// --odometry-noise and --odometry-bias of the simulated robot: T,R each, or
+// left empty for the world file's.
+void AddOdometryOptions(CLI::App* app, std::vector<double>& noise, std::vector<double>& bias);
+
+// --range-factor: how far a pirouette and the map's views are read, in
+// times the map's range.
+CLI::Option* AddRangeFactorOption(CLI::App* app, double& range_factor);
+
+// --table: a place table file; `role` says when it is loaded or written.
+CLI::Option* AddPlaceTableOption(CLI::App* app, std::string& path, std::string_view role);
+
+}  // namespace pirouette::cli
