@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -53,6 +54,7 @@ class EdgeDetector {
   float sin_tolerance_;
   cv::Mat1s dx_;  // the gradient of the strongest channel
   cv::Mat1s dy_;
+  std::array<cv::Mat, 3> planes_;   // the frame's B, G and R apart
   std::vector<std::int16_t> rows_;  // per-row scratch of the Sobel sums
   EdgeMap map_;
   cv::Mat1b barrier_;
