@@ -50,14 +50,18 @@ void VignettingCorrector::Apply(const cv::Mat3b& bgr_raw, cv::Mat3b& out) const 
   out.create(bgr_raw.size());
   const std::uint16_t* gain = gain_q_.data();
   constexpr std::uint32_t kHalf = 1u << (kShift - 1);
-  for (int v = 0; v < height_; ++v) {
+  // The bounds in locals: the byte stores may alias the members, which would
+  // keep the loop from vectorising.
+  const int n = 3 * width_;
+  const int height = height_;
+  for (int v = 0; v < height; ++v) {
     const auto* in = bgr_raw.ptr<std::uint8_t>(v);
     auto* o = out.ptr<std::uint8_t>(v);
-    for (int i = 0; i < width_ * 3; ++i) {
+    for (int i = 0; i < n; ++i) {
       const std::uint32_t value = (in[i] * static_cast<std::uint32_t>(gain[i]) + kHalf) >> kShift;
       o[i] = static_cast<std::uint8_t>(std::min<std::uint32_t>(value, 255));
     }
-    gain += static_cast<std::size_t>(width_) * 3;
+    gain += n;
   }
 }
 
