@@ -17,7 +17,9 @@ constexpr int kPanel = 480;      // each panel's height; the map's is square
 constexpr int kMarginCells = 5;  // round the map's known cells, as map.pgm has
 
 // `image` scaled to fit in a w × h box, centred on `background`.
-void PlaceFitted(const cv::Mat3b& image, cv::Mat3b roi) {
+// `roi` is a header onto the frame's pixels, taken by value so that it can be written.
+void PlaceFitted(const cv::Mat3b& image,
+                 cv::Mat3b roi) {  // NOLINT(performance-unnecessary-value-param)
   const double s = std::min(static_cast<double>(roi.cols) / image.cols,
                             static_cast<double>(roi.rows) / image.rows);
   cv::Mat3b scaled;

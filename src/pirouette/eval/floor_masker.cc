@@ -5,8 +5,6 @@
 
 namespace pirouette::eval {
 
-using vision::MaskSource;
-
 FloorMasker::FloorMasker(vision::MaskSource source, const sim::World& world,
                          const camera::CameraModel& camera)
     : source_(source) {

@@ -371,8 +371,9 @@ core::OdometryNoise ReadOdometryNoise(const std::string& file, const YamlField& 
     }
     return bias;
   };
-  if (const auto value = map.Optional("translation_bias"))
+  if (const auto value = map.Optional("translation_bias")) {
     noise.translation_bias = read_bias(*value);
+  }
   if (const auto value = map.Optional("rotation_bias")) noise.rotation_bias = read_bias(*value);
   return noise;
 }
