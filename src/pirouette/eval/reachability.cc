@@ -11,6 +11,12 @@ namespace {
 // The truth is rasterised over at most this many cells (3 bytes each).
 constexpr std::int64_t kMaxTruthCells = std::int64_t{1} << 26;
 
+// A cell whose clearance exceeds the robot's radius by more than this many
+// metres plus k cells decides the k cells after it on its row (see
+// RasteriseRow). Far above the rounding of a clearance or of a cell's
+// centre (~1e-16 m on a floor of metres), far below any cell.
+constexpr double kLipschitzSlackM = 1e-9;
+
 std::int64_t CellIndexOf(double v, double origin, double resolution) {
   const double i = std::floor((v - origin) / resolution);
   if (!(std::fabs(i) < 1e15)) {
@@ -34,14 +40,18 @@ TruthWindow FloorWindow(const core::GridGeometry& g, const Eigen::Vector2d& floo
   return {x0, y0, static_cast<int>(width), static_cast<int>(height)};
 }
 
-// Row b of the window's `free` and `fits`.
+// Row b of the window's `free` and `fits`. Each cell asked gives its
+// clearance d; World::Clearance being 1-Lipschitz, a cell k cells further
+// along the row has clearance >= d - k·resolution, so where that exceeds the
+// radius (with kLipschitzSlackM to spare for rounding) the cell fits and is
+// free without asking: what asking would have given.
 void RasteriseRow(const core::GridGeometry& g, const sim::World& world, int b,
                   Reachability& truth) {
   const TruthWindow& window = truth.window;
   const double radius = world.robot().radius;
   const double y = g.origin().y() + (static_cast<double>(window.y0 + b) + 0.5) * g.resolution();
   const std::size_t row = static_cast<std::size_t>(b) * static_cast<std::size_t>(window.width);
-  for (int a = 0; a < window.width; ++a) {
+  for (int a = 0; a < window.width;) {
     const Eigen::Vector2d c(
         g.origin().x() + (static_cast<double>(window.x0 + a) + 0.5) * g.resolution(), y);
     // A positive clearance means free; only at zero is IsOccupied needed.
@@ -49,6 +59,16 @@ void RasteriseRow(const core::GridGeometry& g, const sim::World& world, int b,
     const bool occupied = clearance > 0.0 ? false : world.IsOccupied(c);
     truth.free[row + a] = occupied ? 0 : 255;
     truth.fits[row + a] = clearance > radius ? 1 : 0;
+    const double spare_cells = (clearance - radius - kLipschitzSlackM) / g.resolution();
+    const int decided =
+        spare_cells >= 1.0
+            ? static_cast<int>(std::min<double>(std::floor(spare_cells), window.width - a - 1))
+            : 0;
+    for (int k = 1; k <= decided; ++k) {
+      truth.free[row + a + k] = 255;
+      truth.fits[row + a + k] = 1;
+    }
+    a += decided + 1;
   }
 }
 

@@ -58,7 +58,9 @@ struct Reachability {
 // The truth of `world` on `grid`'s cells (only its resolution and origin
 // matter: the window covers the whole floor whatever the grid's size). The
 // evaluator's (EvaluateMap) and the world generator's one definition of R.
-// Throws
+// Relies on World::Clearance being the distance to the nearest occupied point
+// (so 1-Lipschitz): a cell whose neighbour's clearance already decides it is
+// not asked again, with the result asking would give. Throws
 // std::invalid_argument when the floor spans more than 2^26 cells of the
 // grid or lies too far from its origin.
 Reachability ReachableCells(const sim::World& world, const core::GridGeometry& grid);

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/io/world_file.h"
+#include "pirouette/mapping/occupancy_grid.h"
 
 // Its own namespace: the unit tests compile together (unity batches).
 namespace pirouette::eval::reachability_test {
@@ -92,6 +95,37 @@ TEST(ReachableCellsTest, TheGridsSizeDoesNotMatter) {
   EXPECT_EQ(a.free, b.free);
   EXPECT_EQ(a.fits, b.fits);
   EXPECT_EQ(a.reachable, b.reachable);
+}
+
+// The definition, asked of every cell: what ReachableCells's free and fits must be.
+void ExpectAsAskingEveryCell(const sim::World& world, const core::GridGeometry& grid,
+                             const std::string& what) {
+  const Reachability truth = ReachableCells(world, grid);
+  const TruthWindow& w = truth.window;
+  std::size_t mismatches = 0;
+  for (int b = 0; b < w.height; ++b) {
+    for (int a = 0; a < w.width; ++a) {
+      const Eigen::Vector2d c(
+          grid.origin().x() + (static_cast<double>(w.x0 + a) + 0.5) * grid.resolution(),
+          grid.origin().y() + (static_cast<double>(w.y0 + b) + 0.5) * grid.resolution());
+      const std::size_t i = w.Flat(w.x0 + a, w.y0 + b);
+      mismatches += truth.free[i] != (world.IsOccupied(c) ? 0 : 255);
+      mismatches += truth.fits[i] != (world.Clearance(c) > world.robot().radius ? 1 : 0);
+    }
+  }
+  EXPECT_EQ(mismatches, 0u) << what;
+}
+
+TEST(ReachableCellsTest, SkippingCellsGivesWhatAskingEveryCellGives) {
+  ExpectAsAskingEveryCell(MakeWorld(ClosedBox()), kGrid, "closed box");
+  for (const char* name : {"soccer_field", "two_rooms", "maze", "cluttered_room", "apartment"}) {
+    const sim::World world =
+        io::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml");
+    const double cell = mapping::DefaultCellSize(world.robot().radius);
+    ExpectAsAskingEveryCell(world, core::GridGeometry(cell, {0.0, 0.0}, 1, 1), name);
+    // Off the world's lattice.
+    ExpectAsAskingEveryCell(world, core::GridGeometry(cell, {-0.0037, 0.0061}, 1, 1), name);
+  }
 }
 
 }  // namespace
