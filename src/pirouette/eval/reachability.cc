@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pirouette/sim/clearance_index.h"
+
 namespace pirouette::eval {
 namespace {
 
@@ -16,6 +18,12 @@ constexpr std::int64_t kMaxTruthCells = std::int64_t{1} << 26;
 // RasteriseRow). Far above the rounding of a clearance or of a cell's
 // centre (~1e-16 m on a floor of metres), far below any cell.
 constexpr double kLipschitzSlackM = 1e-9;
+
+// The clearance index answers from its buckets up to the radius plus this
+// many cells, and asks every solid beyond (where a cell then decides at
+// least as many cells after it): longer bucket lists against more cells that
+// ask every solid.
+constexpr double kIndexReachCells = 8.0;
 
 std::int64_t CellIndexOf(double v, double origin, double resolution) {
   const double i = std::floor((v - origin) / resolution);
@@ -45,8 +53,8 @@ TruthWindow FloorWindow(const core::GridGeometry& g, const Eigen::Vector2d& floo
 // along the row has clearance >= d - k·resolution, so where that exceeds the
 // radius (with kLipschitzSlackM to spare for rounding) the cell fits and is
 // free without asking: what asking would have given.
-void RasteriseRow(const core::GridGeometry& g, const sim::World& world, int b,
-                  Reachability& truth) {
+void RasteriseRow(const core::GridGeometry& g, const sim::World& world,
+                  const sim::ClearanceIndex& index, int b, Reachability& truth) {
   const TruthWindow& window = truth.window;
   const double radius = world.robot().radius;
   const double y = g.origin().y() + (static_cast<double>(window.y0 + b) + 0.5) * g.resolution();
@@ -55,8 +63,8 @@ void RasteriseRow(const core::GridGeometry& g, const sim::World& world, int b,
     const Eigen::Vector2d c(
         g.origin().x() + (static_cast<double>(window.x0 + a) + 0.5) * g.resolution(), y);
     // A positive clearance means free; only at zero is IsOccupied needed.
-    const double clearance = world.Clearance(c);
-    const bool occupied = clearance > 0.0 ? false : world.IsOccupied(c);
+    const double clearance = index.Clearance(c);
+    const bool occupied = clearance > 0.0 ? false : index.IsOccupied(c);
     truth.free[row + a] = occupied ? 0 : 255;
     truth.fits[row + a] = clearance > radius ? 1 : 0;
     const double spare_cells = (clearance - radius - kLipschitzSlackM) / g.resolution();
@@ -124,7 +132,9 @@ Reachability ReachableCells(const sim::World& world, const core::GridGeometry& g
   truth.free.assign(cells, 0);
   truth.fits.assign(cells, 0);
   truth.reachable.assign(cells, 0);
-  for (int b = 0; b < truth.window.height; ++b) RasteriseRow(grid, world, b, truth);
+  const sim::ClearanceIndex index(world,
+                                  world.robot().radius + kIndexReachCells * grid.resolution());
+  for (int b = 0; b < truth.window.height; ++b) RasteriseRow(grid, world, index, b, truth);
   FloodFill(grid, world.robot().start.translation(), truth);
   return truth;
 }

@@ -60,7 +60,9 @@ struct Reachability {
 // evaluator's (EvaluateMap) and the world generator's one definition of R.
 // Relies on World::Clearance being the distance to the nearest occupied point
 // (so 1-Lipschitz): a cell whose neighbour's clearance already decides it is
-// not asked again, with the result asking would give. Throws
+// not asked again, with the result asking would give; the cells asked ask a
+// sim::ClearanceIndex (World::Clearance's values, from the nearby solids
+// only). Throws
 // std::invalid_argument when the floor spans more than 2^26 cells of the
 // grid or lies too far from its origin.
 Reachability ReachableCells(const sim::World& world, const core::GridGeometry& grid);
