@@ -70,7 +70,7 @@ TEST(ReachableCellsTest, ClosedPocketIsFloorTheRobotCannotReach) {
   // Inside the box, centres farther than 0.04 from its walls' inner faces:
   // x 0.67..0.83 (9 columns), y 0.23..0.39 (9 rows).
   EXPECT_EQ(truth.UnreachableFitCount(), 9u * 9u);
-  EXPECT_EQ(Count(truth.fits), truth.ReachableCount() + 9u * 9u);
+  EXPECT_EQ(Count(truth.fits), truth.ReachableCount() + std::size_t{9 * 9});
 
   // Started inside it, the rest of the floor is out of reach instead.
   const Reachability inside = ReachableCells(MakeWorld(ClosedBox(), {0.75, 0.30}), kGrid);

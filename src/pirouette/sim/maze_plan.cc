@@ -18,9 +18,9 @@ std::vector<Mm> DrawWidths(SeededRandom& random, Mm total, int n, Mm lo, Mm hi) 
     for (Mm i = 0; i < total % n; ++i) ++widths[static_cast<std::size_t>(i)];
     return widths;
   }
-  const double l = static_cast<double>(lo);
-  const double h = static_cast<double>(hi);
-  const double t = static_cast<double>(total);
+  const auto l = static_cast<double>(lo);
+  const auto h = static_cast<double>(hi);
+  const auto t = static_cast<double>(total);
   std::vector<double> drawn(static_cast<std::size_t>(n));
   double sum = 0.0;
   for (double& w : drawn) sum += (w = random.Uniform(l, h));
@@ -65,8 +65,11 @@ std::vector<Mm> Starts(const std::vector<Mm>& widths, Mm t) {
 
 // open[cell][direction]: direction 0 east, 1 north; from a recursive backtracker.
 std::vector<std::array<bool, 2>> SpanningTree(SeededRandom& random, int nx, int ny) {
-  const auto index = [nx](int x, int y) { return static_cast<std::size_t>(y * nx + x); };
-  std::vector<std::array<bool, 2>> open(static_cast<std::size_t>(nx * ny), {false, false});
+  const auto index = [nx](int x, int y) {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) + static_cast<std::size_t>(x);
+  };
+  std::vector<std::array<bool, 2>> open(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny),
+                                        {false, false});
   std::vector<bool> visited(open.size(), false);
   const int start = static_cast<int>(random.Below(open.size()));
   std::vector<int> stack = {start};
@@ -112,7 +115,8 @@ MazePlan DrawMazePlan(SeededRandom& random, const MazePlanOptions& o) {
   const std::vector<Mm> ys = Starts(plan.rows, t);
   const std::vector<std::array<bool, 2>> open = SpanningTree(random, nx, ny);
   const auto closed = [&](int x, int y, int direction) {
-    return !open[static_cast<std::size_t>(y * nx + x)][direction];
+    return !open[static_cast<std::size_t>(y) * static_cast<std::size_t>(nx) +
+                 static_cast<std::size_t>(x)][direction];
   };
   // Each line between two columns (rows): runs of closed walls merged, each
   // run reaching over the wall-thick squares at its ends so that corners close.

@@ -65,7 +65,10 @@ Eigen::Vector2d YawDirection(int k) {
   return d;
 }
 
-ObstaclePlacer::ObstaclePlacer(const Eigen::Vector2d& floor_size) : floor_size_(floor_size) {}
+// Eigen's fixed-size vectors go by reference (Eigen's alignment rules).
+ObstaclePlacer::ObstaclePlacer(
+    const Eigen::Vector2d& floor_size)  // NOLINT(modernize-pass-by-value)
+    : floor_size_(floor_size) {}
 
 ObstaclePlacer::Footprint ObstaclePlacer::Rectangle(const Eigen::Vector2d& lo,
                                                     const Eigen::Vector2d& hi) {

@@ -71,9 +71,8 @@ struct KindScale {
   StyleScale style;
   FurnitureScale furniture;
   Mm min_room = 0;  // the shortest side of a room
-  // How many rooms the floor is split into (as many as fit): for the
-  // apartment, one for each room_area_min..max m² of floor, within
-  // rooms_min..rooms_max; for rooms, rooms_min..rooms_max.
+  // How many rooms the floor is split into (as many as fit): one for each
+  // room_area_min..max m² of floor, within rooms_min..rooms_max.
   double room_area_min_m2 = 0.0;
   double room_area_max_m2 = 0.0;
   int rooms_min = 0;
@@ -142,8 +141,10 @@ KindScale ScaleOf(WorldKind kind) {
                         .wall_thickness_min = 10,
                         .wall_thickness_max = 30},
           .min_room = 550,
+          .room_area_min_m2 = 0.8,
+          .room_area_max_m2 = 2.0,
           .rooms_min = 2,
-          .rooms_max = 5,
+          .rooms_max = 24,
           .furniture_min = 0,
           .furniture_max = 3};
 }
@@ -174,7 +175,7 @@ std::optional<PrismSpec> DrawPrism(SeededRandom& random, Mm cx, Mm cy, Mm radius
   for (int i = 0; i < n; ++i) {  // every turn between corners under 180°
     if ((steps[(i + 1) % n] - steps[i] + 12) % 12 >= 6) return std::nullopt;
   }
-  const double rx = static_cast<double>(radius);
+  const auto rx = static_cast<double>(radius);
   const double ry = rx * random.Uniform(0.5, 1.0);
   const Eigen::Vector2d turn = YawDirection(static_cast<int>(random.Below(24)));
   PrismSpec prism;
@@ -349,12 +350,9 @@ WorldSpec GenerateRooms(SeededRandom& random, WorldKind kind, Mm width, Mm heigh
                         const KindScale& scale, const WorldStyle& style) {
   const Mm t = std::llround(style.walls.thickness * 1000.0);
   const double area_m2 = Metres(width) * Metres(height);
+  const double area_per_room = random.Uniform(scale.room_area_min_m2, scale.room_area_max_m2);
   const int rooms =
-      kind == WorldKind::kApartment
-          ? std::clamp(static_cast<int>(area_m2 / random.Uniform(scale.room_area_min_m2,
-                                                                 scale.room_area_max_m2)),
-                       scale.rooms_min, scale.rooms_max)
-          : static_cast<int>(random.Between(scale.rooms_min, scale.rooms_max));
+      std::clamp(static_cast<int>(area_m2 / area_per_room), scale.rooms_min, scale.rooms_max);
   const Mm pass = RadiiMm(scale, kPassRadii);
   const RoomPlanOptions options{width,
                                 height,
@@ -377,13 +375,16 @@ WorldSpec GenerateRooms(SeededRandom& random, WorldKind kind, Mm width, Mm heigh
     const int count = static_cast<int>(random.Between(scale.furniture_min, scale.furniture_max));
     furniture += Furnish(random, room, count, Metres(pass), scale, style, placer);
   }
+  const std::string doors =
+      plan.door_widths.empty()
+          ? "no doors"
+          : fmt::format("{} {} m wide", Count(plan.door_widths.size(), "door", "doors"),
+                        RangeText(plan.door_widths));
   return Assemble(
       random, kind, width, height, scale, style, placer,
-      fmt::format("{}: {}, {} {} m wide, walls {} m thick; {} at least {} m apart",
-                  WorldKindName(kind), Count(plan.rooms.size(), "room", "rooms"),
-                  Count(plan.door_widths.size(), "door", "doors"), RangeText(plan.door_widths),
-                  Metres(t), Count(furniture, "piece of furniture", "pieces of furniture"),
-                  Metres(pass)));
+      fmt::format("{}: {}, {}, walls {} m thick; {} at least {} m apart", WorldKindName(kind),
+                  Count(plan.rooms.size(), "room", "rooms"), doors, Metres(t),
+                  Count(furniture, "piece of furniture", "pieces of furniture"), Metres(pass)));
 }
 
 WorldSpec GenerateMaze(SeededRandom& random, Mm width, Mm height, const KindScale& scale,

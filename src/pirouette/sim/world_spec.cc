@@ -34,8 +34,7 @@ World BuildWorld(const WorldSpec& spec) {
   RobotSpec robot_spec{
       core::Pose2(robot.start.x(), robot.start.y(), core::DegToRad(robot.start_heading_deg)),
       robot.radius, robot.camera, robot.odometry_noise};
-  return World(spec.name, spec.floor, spec.walls, std::move(solids), spec.light,
-               std::move(robot_spec));
+  return {spec.name, spec.floor, spec.walls, std::move(solids), spec.light, std::move(robot_spec)};
 }
 
 }  // namespace pirouette::sim
