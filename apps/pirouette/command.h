@@ -36,5 +36,7 @@ Command AddCaptureCommand(CLI::App& parent);
 Command AddSimServeCommand(CLI::App& parent);
 Command AddPlacesCommand(CLI::App& parent);
 Command AddLocateCommand(CLI::App& parent);
+// `world` and its own subcommands (world_command.cc): generate.
+Command AddWorldCommand(CLI::App& parent);
 
 }  // namespace pirouette::cli

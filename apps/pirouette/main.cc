@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
       AddExploreEvalCommand(app), AddMapCommand(app),
       AddCalibrateCommand(app),   AddCaptureCommand(app),
       AddSimServeCommand(app),    AddPlacesCommand(app),
-      AddLocateCommand(app),
+      AddLocateCommand(app),      AddWorldCommand(app),
   };
 
   try {

@@ -18,7 +18,8 @@ namespace pirouette::eval {
 // robot's start, over the cells whose centre has World::Clearance greater
 // than the robot's radius (its disc touches nothing there). When the start
 // cell's own centre does not clear, the fill starts from those of its 8
-// neighbours that do. R is taken over the whole floor on the map's grid
+// neighbours that do (eval::ReachableCells, which the world generator's
+// validity check shares). R is taken over the whole floor on the map's grid
 // (extended past the map's edges with the same cells), so a map that covers
 // part of the floor covers part of R.
 //
