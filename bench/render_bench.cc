@@ -18,8 +18,11 @@
 
 #include "bench_worlds.h"
 #include "pirouette/core/angle.h"
+#include "pirouette/sim/block_grid.h"
 #include "pirouette/sim/ray_caster.h"
 #include "pirouette/sim/renderer.h"
+#include "pirouette/sim/world_spec.h"
+#include "pirouette/tools/world_generate.h"
 
 namespace {
 
@@ -61,6 +64,55 @@ void RenderRayCaster(benchmark::State& state, int width, int height) {
   }
   SetFramesPerSecond(state, start);
 }
+
+// A digital twin's scale (issue 20): a 20 x 20 m apartment (generated, seed
+// 1) rasterised at 5 cm, each occupied cell a block, merged into boxes as
+// `world from-map` does (sim::BlockGridSolids) -- against the shipped
+// apartment (8 x 6 m, 30 prisms) at the apartment robot's 640 x 480.
+const World& GridWorld20m() {
+  static const World world = [] {
+    const World drawn = pirouette::sim::BuildWorld(
+        pirouette::tools::GenerateValidWorld(pirouette::sim::WorldKind::kApartment, 1,
+                                             Eigen::Vector2d(20.0, 20.0))
+            .spec);
+    pirouette::sim::BlockGrid grid{pirouette::core::GridGeometry(0.05, {0.0, 0.0}, 400, 400), {}};
+    for (std::size_t i = 0; i < grid.geometry.CellCount(); ++i) {
+      const Eigen::Vector2d c = grid.geometry.CellCentre(grid.geometry.Unflat(i));
+      grid.solid.push_back(drawn.IsOccupied(c) ? 1 : 0);
+    }
+    return World("grid-20m", drawn.floor(), std::nullopt,
+                 pirouette::sim::BlockGridSolids(grid, 0.9, {235, 230, 220}), drawn.light(),
+                 drawn.robot());
+  }();
+  return world;
+}
+
+const World& Apartment() {
+  static const World world =
+      pirouette::io::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/apartment.yaml");
+  return world;
+}
+
+// A pirouette at the world's start, 30 degrees a frame.
+void RenderWorld(benchmark::State& state, const World& world) {
+  pirouette::sim::Renderer renderer(world, world.robot().camera, {});
+  state.SetLabel(std::to_string(world.solids().size()) + " solids");
+  const Pose2 start = world.robot().start;
+  double heading = start.heading();
+  const auto begin = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    heading += pirouette::core::DegToRad(30.0);
+    benchmark::DoNotOptimize(renderer.Render(Pose2(start.x(), start.y(), heading)));
+  }
+  SetFramesPerSecond(state, begin);
+}
+
+BENCHMARK_CAPTURE(RenderWorld, grid, GridWorld20m())
+    ->Name("render/grid-20m-5cm/640x480")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(RenderWorld, apartment, Apartment())
+    ->Name("render/apartment/640x480")
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(RenderPirouette, 320x240, 320, 240)
     ->Name("render/pirouette/320x240")

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -9,6 +10,7 @@
 #include "apps/pirouette/options.h"
 #include "apps/pirouette/parse.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/tools/world_from_map.h"
 #include "pirouette/tools/world_generate.h"
 
 namespace pirouette::cli {
@@ -77,17 +79,78 @@ Command AddWorldGenerate(CLI::App& world) {
       }};
 }
 
+constexpr const char* kFromMapHelp =
+    "Write a world file from a ROS map_server map (a digital twin of a real building): the map "
+    "is read exactly as map_server reads it (trinary, scale or raw mode, negate, the "
+    "thresholds, PGM or PNG), and every cell map_server does not serve as free becomes a solid "
+    "block (occupied and unknown alike: nothing may be explored where the map does not know). "
+    "The floor is the map's extent, the map's frame moved so that its origin is the world's "
+    "(0, 0). Gaps narrower than the robot (where a laser saw through a wall) are sealed, with "
+    "every free cell the robot's disc cannot reach from its start; specks stay. The start is "
+    "the point of the largest region the disc can drive in that lies farthest from its walls, "
+    "unless --start gives one. The world names the map by its path (relative to the world "
+    "file), so keep the map where it is.\n"
+    "  example: pirouette world from-map --map ../shared/realdata/maps/tb3_office/map.yaml "
+    "--out office.yaml";
+
+// `world from-map`.
+Command AddWorldFromMap(CLI::App& world) {
+  auto request = std::make_shared<tools::WorldFromMapRequest>();
+  auto start = std::make_shared<std::string>();
+  auto no_seal = std::make_shared<bool>(false);
+  CLI::App* cmd = world.add_subcommand("from-map", kFromMapHelp);
+  cmd->add_option("--map", request->map_path, "the map_server map's yaml file")->required();
+  cmd->add_option("--out", request->out_path,
+                  "the world file to write (pirouette-world/1 YAML, atomically)")
+      ->required();
+  cmd->add_option("--radius", request->radius_m, "the robot's radius in metres")
+      ->capture_default_str();
+  cmd->add_option("--camera", request->camera_path,
+                  "a camera file, written inline (default: worlds/webcam640.yaml's camera, "
+                  "0.30 m up)");
+  cmd->add_option("--height", request->height_m,
+                  "the blocks' height in metres (above the camera, as a building's walls are)")
+      ->capture_default_str();
+  cmd->add_option("--start", *start,
+                  "X,Y[,HEADING]: the start in the map's frame (metres, degrees; default: "
+                  "chosen)");
+  cmd->add_flag("--no-seal", *no_seal,
+                "keep every free cell, also those the robot cannot reach (the camera then sees "
+                "through gaps it cannot pass)");
+  return {cmd, [request, start, no_seal] {
+            if (!start->empty()) {
+              const std::size_t count = std::count(start->begin(), start->end(), ',') == 1 ? 2 : 3;
+              std::vector<double> xyh =
+                  ParseNumbers(*start, count, "--start", "X,Y or X,Y,HEADING (metres, degrees)");
+              if (count == 2) xyh.push_back(0.0);
+              request->start = Eigen::Vector3d(xyh[0], xyh[1], xyh[2]);
+            }
+            request->seal = !*no_seal;
+            const tools::WorldFromMapResult r = tools::RunWorldFromMap(*request);
+            const core::GridGeometry& g = r.map.geometry;
+            std::fprintf(stderr,
+                         "wrote %s: %g x %g m from %s (%d x %d cells at %g m): %zu free cells, "
+                         "%zu sealed, blocks in %zu boxes; start (%g, %g) in the map's frame, "
+                         "(%g, %g) in the world's\n",
+                         request->out_path.c_str(), g.width() * g.resolution(),
+                         g.height() * g.resolution(), request->map_path.c_str(), g.width(),
+                         g.height(), g.resolution(), r.free_cells, r.sealed_cells, r.boxes,
+                         r.start_map.x(), r.start_map.y(), r.start_world.x(), r.start_world.y());
+          }};
+}
+
 }  // namespace
 
 Command AddWorldCommand(CLI::App& parent) {
   CLI::App* cmd = parent.add_subcommand(
       "world",
       "Make world files that nobody drew by hand (docs/worlds.md): `world generate` draws random "
-      "ones of a kind.\n  example: pirouette world generate --kind rooms --seed 1 --out "
+      "ones of a kind, `world from-map` makes a building's digital twin from its ROS map.\n  "
+      "example: pirouette world generate --kind rooms --seed 1 --out "
       "rooms1.yaml");
   cmd->require_subcommand(1);
-  // One Add function a subcommand of `world`; `world from-map` joins this list.
-  const std::vector<Command> subcommands = {AddWorldGenerate(*cmd)};
+  // One Add function a subcommand of `world`.
+  const std::vector<Command> subcommands = {AddWorldGenerate(*cmd), AddWorldFromMap(*cmd)};
   return {cmd, [subcommands] {
             for (const Command& subcommand : subcommands) {
               if (subcommand.app->parsed()) subcommand.run();

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -33,12 +34,15 @@ using mapping::CellState;
 constexpr std::uint64_t kMaxSide = 1U << 20;
 constexpr std::uint64_t kMaxPixels = 1U << 28;
 
-// A greyscale picture, row-major, the first row the top; values 0..maxval.
+// A picture as map_server sees it, row-major, the first row the top: each
+// pixel's colour channels averaged (0..maxval), and its alpha (0 transparent,
+// maxval opaque) where the picture has an alpha channel.
 struct GreyImage {
   int width = 0;
   int height = 0;
   double maxval = 255.0;
   std::vector<double> values;
+  std::vector<double> alpha;  // empty: no alpha channel
 };
 
 unsigned char PgmValue(CellState state) {
@@ -202,7 +206,7 @@ class PgmParser {
   std::size_t pos_ = 0;
 };
 
-// Any other picture, through OpenCV: colour channels averaged, alpha ignored.
+// Any other picture, through OpenCV: colour channels averaged, alpha kept apart.
 GreyImage DecodeOtherImage(const std::string& bytes, const std::string& path) {
   const std::vector<unsigned char> buffer(bytes.begin(), bytes.end());
   const cv::Mat decoded = buffer.empty() ? cv::Mat() : cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
@@ -226,12 +230,14 @@ GreyImage DecodeOtherImage(const std::string& bytes, const std::string& path) {
   image.height = values.rows;
   image.maxval = decoded.depth() == CV_8U ? 255.0 : 65535.0;
   image.values.reserve(values.total());
+  if (colours < channels) image.alpha.reserve(values.total());
   for (int r = 0; r < values.rows; ++r) {
     const double* row = values.ptr<double>(r);
     for (int c = 0; c < values.cols; ++c) {
       double sum = 0.0;
       for (int k = 0; k < colours; ++k) sum += row[c * channels + k];
       image.values.push_back(sum / colours);
+      if (colours < channels) image.alpha.push_back(row[c * channels + colours]);
     }
   }
   return image;
@@ -307,29 +313,62 @@ void WriteRosMap(const mapping::TrinaryMap& map, const std::string& yaml_path) {
   WriteFileAtomically(yaml.string(), RosMapYaml(map, pgm.filename().string()));
 }
 
-mapping::TrinaryMap ReadRosMap(const std::string& yaml_path) {
+namespace {
+
+MapMode ReadMode(const std::string& file, const io::YamlMap& fields) {
+  const auto mode = fields.Optional("mode");
+  if (!mode) return MapMode::kTrinary;
+  const std::string name = io::ReadName(file, *mode);
+  if (name == "trinary") return MapMode::kTrinary;
+  if (name == "scale") return MapMode::kScale;
+  if (name == "raw") return MapMode::kRaw;
+  io::ThrowInputError(file, *mode,
+                      "unknown mode '" + name + "' (map_server knows trinary, scale, raw)");
+}
+
+// One pixel's cell value, as nav2's map_io (loadMapFromFile) computes it.
+std::int8_t CellValue(MapMode mode, double grey, const double* alpha, double maxval, bool negate,
+                      double occupied_thresh, double free_thresh) {
+  // Trinary mode averages the alpha in with the colour channels (3 of them,
+  // a grey picture's being equal), as map_server does "to preserve existing
+  // behaviour"; scale mode makes every pixel that is not opaque unknown.
+  double shade = grey / maxval;
+  if (mode == MapMode::kTrinary && alpha != nullptr) shade = (3.0 * grey + *alpha) / (4.0 * maxval);
+  const double occ = negate ? shade : 1.0 - shade;
+  switch (mode) {
+    case MapMode::kTrinary:
+      if (occupied_thresh < occ) return kMapOccupied;
+      if (occ < free_thresh) return kMapFree;
+      return kMapUnknown;
+    case MapMode::kScale:
+      if (alpha != nullptr && *alpha < maxval) return kMapUnknown;
+      if (occupied_thresh < occ) return kMapOccupied;
+      if (occ < free_thresh) return kMapFree;
+      return static_cast<std::int8_t>(
+          std::rint((occ - free_thresh) / (occupied_thresh - free_thresh) * 100.0));
+    case MapMode::kRaw: {
+      const double value = std::round(shade * 255.0);  // negate plays no part, as in map_server
+      if (value >= 0.0 && value <= 100.0) return static_cast<std::int8_t>(value);
+      return kMapUnknown;
+    }
+  }
+  return kMapUnknown;
+}
+
+}  // namespace
+
+MapServerMap ReadMapServerMap(const std::string& yaml_path) {
   const std::string& file = yaml_path;
   const YAML::Node root = io::LoadYamlFile(file);
   const io::YamlMap fields(file, io::YamlField{root, "", io::LineOf(root)});
 
   const io::YamlField image_field = fields.Required("image");
   const std::string image_name = io::ReadName(file, image_field);
-
-  if (const auto mode = fields.Optional("mode")) {
-    const std::string name = io::ReadName(file, *mode);
-    if (name == "scale" || name == "raw") {
-      io::ThrowInputError(
-          file, *mode, "mode '" + name + "' is not supported: pirouette reads trinary maps only");
-    }
-    if (name != "trinary") {
-      io::ThrowInputError(file, *mode,
-                          "unknown mode '" + name + "' (map_server knows trinary, scale, raw)");
-    }
-  }
+  const MapMode mode = ReadMode(file, fields);
 
   const io::YamlField resolution_field = fields.Required("resolution");
   const double resolution = io::ReadNumber(file, resolution_field);
-  if (!(resolution > 0.0)) {
+  if (!(resolution > 0.0) || !std::isfinite(resolution)) {
     io::ThrowInputError(file, resolution_field,
                         fmt::format("expected a positive number, got {}", resolution));
   }
@@ -359,23 +398,41 @@ mapping::TrinaryMap ReadRosMap(const std::string& yaml_path) {
   const GreyImage image =
       DecodeImage(ReadBytes(image_file, file, image_field.line, image_field.path), image_file);
 
-  mapping::TrinaryMap map{core::GridGeometry(resolution, {origin.values[0], origin.values[1]},
-                                             image.width, image.height),
-                          {}};
-  map.cells.resize(map.geometry.CellCount(), CellState::kUnknown);
+  MapServerMap map{core::GridGeometry(resolution, {origin.values[0], origin.values[1]}, image.width,
+                                      image.height),
+                   mode,
+                   {}};
+  map.cells.resize(map.geometry.CellCount(), kMapUnknown);
+  const bool has_alpha = !image.alpha.empty();
   std::size_t i = 0;
   for (int y = image.height - 1; y >= 0; --y) {
-    for (int x = 0; x < image.width; ++x) {
-      const double v = image.values[i++];
-      const double p = negate ? v / image.maxval : (image.maxval - v) / image.maxval;
-      CellState state = CellState::kUnknown;
-      if (p > occupied_thresh) {
-        state = CellState::kOccupied;
-      } else if (p < free_thresh) {
-        state = CellState::kFree;
-      }
-      map.cells[map.geometry.Flat({x, y})] = state;
+    for (int x = 0; x < image.width; ++x, ++i) {
+      map.cells[map.geometry.Flat({x, y})] =
+          CellValue(mode, image.values[i], has_alpha ? &image.alpha[i] : nullptr, image.maxval,
+                    negate, occupied_thresh, free_thresh);
     }
+  }
+  return map;
+}
+
+mapping::TrinaryMap ReadRosMap(const std::string& yaml_path) {
+  {
+    // The mode first, before the image is read: a scale map gets that said.
+    const YAML::Node root = io::LoadYamlFile(yaml_path);
+    const io::YamlMap fields(yaml_path, io::YamlField{root, "", io::LineOf(root)});
+    const MapMode mode = ReadMode(yaml_path, fields);
+    if (mode != MapMode::kTrinary) {
+      io::ThrowInputError(yaml_path, *fields.Optional("mode"),
+                          std::string("mode '") + (mode == MapMode::kScale ? "scale" : "raw") +
+                              "' is not supported here: a pirouette map is trinary");
+    }
+  }
+  const MapServerMap read = ReadMapServerMap(yaml_path);
+  mapping::TrinaryMap map{read.geometry, {}};
+  map.cells.resize(read.cells.size(), CellState::kUnknown);
+  for (std::size_t k = 0; k < read.cells.size(); ++k) {
+    if (read.cells[k] == kMapFree) map.cells[k] = CellState::kFree;
+    if (read.cells[k] == kMapOccupied) map.cells[k] = CellState::kOccupied;
   }
   return map;
 }

@@ -1,6 +1,10 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
+
+#include "pirouette/core/grid_geometry.h"
 
 #include "pirouette/mapping/trinary_map.h"
 
@@ -38,24 +42,49 @@ std::string RosMapPgm(const mapping::TrinaryMap& map);
 // file), std::runtime_error naming the path when a file cannot be written.
 void WriteRosMap(const mapping::TrinaryMap& map, const std::string& yaml_path);
 
-// Reads a map the way map_server does. The YAML needs `image` (relative to
-// the YAML's folder, or absolute), `resolution` (> 0), `origin` ([x, y, yaw],
-// yaw 0: rotated maps are refused), `negate` (0 / 1 or false / true),
-// `occupied_thresh` and `free_thresh` (0..1, free_thresh <= occupied_thresh);
-// `mode` is optional and must be trinary (map_server's default; scale and raw
-// are refused, as a TrinaryMap cannot hold their in-between values). Other
-// keys are ignored, as map_server ignores them.
+// map_server's three ways of reading an image (the yaml's `mode`).
+enum class MapMode { kTrinary, kScale, kRaw };
+
+// The cell values of a nav_msgs/OccupancyGrid.
+inline constexpr std::int8_t kMapFree = 0;
+inline constexpr std::int8_t kMapOccupied = 100;
+inline constexpr std::int8_t kMapUnknown = -1;
+
+// A map as map_server serves it: its geometry (the origin's x, y) and one
+// value a cell, row-major from the bottom row (as `geometry.Flat`): 0 free,
+// 100 occupied, -1 unknown, and in scale and raw modes the values between.
+struct MapServerMap {
+  core::GridGeometry geometry;
+  MapMode mode = MapMode::kTrinary;
+  std::vector<std::int8_t> cells;
+};
+
+// Reads a map exactly as map_server does (nav2's map_io, loadMapYaml and
+// loadMapFromFile). The YAML needs `image` (relative to the YAML's folder,
+// or absolute), `resolution` (> 0), `origin` ([x, y, yaw], yaw 0: rotated
+// maps are refused), `negate` (0 / 1 or false / true), `occupied_thresh` and
+// `free_thresh` (0..1, free_thresh <= occupied_thresh); `mode` is optional
+// (trinary, the default, scale or raw). Other keys are ignored, as
+// map_server ignores them.
 //
 // The image is a PGM (binary P5 or plain P2, maxval up to 65535), or any
-// other picture OpenCV reads (PNG, ...), whose colour channels are averaged
-// (an alpha channel is ignored). A pixel of value v (maxval m) is occupied
-// with probability p = (m - v) / m, or v / m when negated; the cell is
-// occupied when p > occupied_thresh, free when p < free_thresh, unknown
-// otherwise. The image's first row is the map's top.
+// other picture OpenCV reads (PNG with or without alpha, ...). Its colour
+// channels are averaged to a shade s in 0..1 (in trinary mode an alpha
+// channel is averaged in as a fourth); occ = s when negated, else 1 - s.
+//  - trinary: 100 when occ > occupied_thresh, 0 when occ < free_thresh, else -1;
+//  - scale: -1 where the pixel is not opaque, then as trinary, but between
+//    the thresholds rint(100 · (occ - free_thresh) / (occupied_thresh - free_thresh));
+//  - raw: round(255 · s) where that is 0..100, else -1 (negate ignored).
+// The image's first row is the map's top.
 //
 // Throws core::InputError naming the file, the line and the field for a
 // missing or unreadable file, malformed YAML, a missing or wrong field, and a
 // missing, unreadable or malformed image.
+MapServerMap ReadMapServerMap(const std::string& yaml_path);
+
+// ReadMapServerMap for a trinary map (pirouette's own, `locate`'s input):
+// 0 free, 100 occupied, -1 unknown. Throws core::InputError naming `mode`
+// for a scale or raw map, whose in-between values a TrinaryMap cannot hold.
 mapping::TrinaryMap ReadRosMap(const std::string& yaml_path);
 
 }  // namespace pirouette::io

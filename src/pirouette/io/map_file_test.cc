@@ -192,6 +192,62 @@ TEST_F(MapFileTest, ReadsPngThroughOpenCv) {
                                                CellState::kOccupied, CellState::kFree}));
 }
 
+// The modes, each value worked by hand from nav2's map_io (loadMapFromFile).
+TEST_F(MapFileTest, ScaleModeAsMapServerReadsIt) {
+  // occ = 1 - v/255; thresholds 0.65 and 0.196: between them
+  // rint(100 (occ - 0.196) / (0.65 - 0.196)).
+  // v:   0 -> occ 1 (100); 100 -> .6078 (91); 180 -> .2941 (22); 204 -> .2 (1);
+  //      206 -> .1922 (0); 255 -> 0 (0).
+  Write("map.pgm", "P2\n6 1\n255\n0 100 180 204 206 255\n");
+  const MapServerMap map = ReadMapServerMap(Yaml("map.pgm", "mode: scale\n"));
+  EXPECT_EQ(map.mode, MapMode::kScale);
+  EXPECT_EQ(map.cells, (std::vector<std::int8_t>{100, 91, 22, 1, 0, 0}));
+}
+
+TEST_F(MapFileTest, ScaleModeMakesEveryPixelNotOpaqueUnknown) {
+  cv::Mat4b image(1, 3);
+  image(0, 0) = {0, 0, 0, 255};        // opaque black: occupied
+  image(0, 1) = {255, 255, 255, 254};  // nearly opaque white: unknown
+  image(0, 2) = {255, 255, 255, 255};  // opaque white: free
+  ASSERT_TRUE(cv::imwrite(Path("map.png"), image));
+  EXPECT_EQ(ReadMapServerMap(Yaml("map.png", "mode: scale\n")).cells,
+            (std::vector<std::int8_t>{100, -1, 0}));
+}
+
+TEST_F(MapFileTest, TrinaryModeAveragesTheAlphaIn) {
+  // (3 v + alpha) / 4: black opaque (63.75, occ .75) occupied; white fully
+  // transparent (191.25, occ .25) unknown; white opaque free; grey 100 with
+  // alpha 0 (75, occ .706) occupied, though opaque it would be unknown.
+  cv::Mat4b image(1, 4);
+  image(0, 0) = {0, 0, 0, 255};
+  image(0, 1) = {255, 255, 255, 0};
+  image(0, 2) = {255, 255, 255, 255};
+  image(0, 3) = {100, 100, 100, 0};
+  ASSERT_TRUE(cv::imwrite(Path("map.png"), image));
+  EXPECT_EQ(ReadMapServerMap(Yaml("map.png")).cells, (std::vector<std::int8_t>{100, -1, 0, 100}));
+}
+
+TEST_F(MapFileTest, RawModeTakesTheValuesAsTheyAre) {
+  // round(255 · v / 255) = v where 0..100, else unknown; negate plays no part.
+  Write("map.pgm", "P2\n5 1\n255\n0 1 57 100 101\n");
+  const std::vector<std::int8_t> expected{0, 1, 57, 100, -1};
+  EXPECT_EQ(ReadMapServerMap(Yaml("map.pgm", "mode: raw\n")).cells, expected);
+  Write("negated.yaml",
+        "image: map.pgm\nmode: raw\nresolution: 0.1\norigin: [1.0, 2.0, 0.0]\nnegate: 1\n"
+        "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  EXPECT_EQ(ReadMapServerMap(Path("negated.yaml")).cells, expected);
+}
+
+TEST_F(MapFileTest, ReadRosMapRefusesScaleAndRawNamingTheMode) {
+  Write("map.pgm", "P2\n1 1\n255\n0\n");
+  for (const std::string mode : {"scale", "raw"}) {
+    const core::InputError e =
+        ErrorOf([&] { ReadRosMap(Yaml("map.pgm", "mode: " + mode + "\n")); });
+    EXPECT_EQ(e.field(), "mode") << mode;
+    EXPECT_NE(std::string(e.what()).find(mode), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(MapFileTest, ImagePathIsRelativeToTheYaml) {
   fs::create_directories(dir_ / "maps");
   WriteRosMap(SmallMap(), Path("maps/map.yaml"));

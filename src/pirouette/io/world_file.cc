@@ -20,7 +20,9 @@
 
 #include "pirouette/core/angle.h"
 #include "pirouette/io/camera_file.h"
+#include "pirouette/io/map_file.h"
 #include "pirouette/io/yaml_fields.h"
+#include "pirouette/sim/block_grid.h"
 
 namespace pirouette::io {
 namespace {
@@ -232,6 +234,61 @@ sim::Chessboard ReadChessboard(const std::string& file, const YamlField& field) 
   return board;
 }
 
+bool IsGridItem(const YamlField& field) {
+  return field.node.IsMap() && field.node.size() == 1 && field.node.begin()->first.IsScalar() &&
+         field.node.begin()->first.Scalar() == "grid";
+}
+
+// `- grid: {map: house.yaml, height: 0.25, colour: [200, 200, 200], seal: true}`:
+// a map_server map (relative to the world file) stood up as blocks, its
+// lower-left corner at the world's (0, 0); sealed once the robot is known.
+struct GridItem {
+  sim::BlockGrid grid;
+  double height;
+  core::Rgb colour;
+  bool seal;
+  std::size_t item;
+  int line;
+};
+
+GridItem ReadGrid(const std::string& file, const YamlField& field, std::size_t index) {
+  namespace fs = std::filesystem;
+  const YamlMap item(file, field);
+  const YamlField grid_field = item.Required("grid");
+  const YamlMap map = ReadMap(file, grid_field, {"map", "height", "colour", "seal"});
+  const YamlField map_field = map.Required("map");
+  const std::string name = ReadString(file, map_field);
+  if (name.empty()) {
+    ThrowInputError(file, map_field, "expected a map's yaml file, got an empty string");
+  }
+  fs::path path(name);
+  if (path.is_relative()) path = fs::path(file).parent_path() / path;
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) {
+    ThrowInputError(file, map_field, fmt::format("map file '{}' not found", path.string()));
+  }
+  const io::MapServerMap read = io::ReadMapServerMap(path.string());
+  sim::BlockGrid grid{core::GridGeometry(read.geometry.resolution(), Eigen::Vector2d::Zero(),
+                                         read.geometry.width(), read.geometry.height()),
+                      {}};
+  // Only what map_server serves as free (0) is floor: occupied, unknown and
+  // the values between (scale and raw modes) are blocks.
+  grid.solid.reserve(read.cells.size());
+  for (const std::int8_t v : read.cells) grid.solid.push_back(v == io::kMapFree ? 0 : 1);
+  const double height = ReadPositive(file, map.Required("height"));
+  const core::Rgb colour = ReadColour(file, map.Required("colour"));
+  bool seal = false;
+  if (const auto seal_field = map.Optional("seal")) {
+    if (!seal_field->node.IsScalar() || ScalarKindOf(seal_field->node) != ScalarKind::kBool) {
+      ThrowInputError(file, *seal_field,
+                      "expected true or false, got " + DescribeNode(seal_field->node));
+    }
+    const std::string& v = seal_field->node.Scalar();
+    seal = v == "true" || v == "True" || v == "TRUE";
+  }
+  return GridItem{std::move(grid), height, colour, seal, index, field.line};
+}
+
 // One item of `obstacles`: a map with one key, its shape.
 sim::Solid ReadObstacle(const std::string& file, const YamlField& field) {
   static constexpr std::string_view kShapes[] = {"box", "cylinder", "wall", "prism"};
@@ -243,15 +300,15 @@ sim::Solid ReadObstacle(const std::string& file, const YamlField& field) {
     if (!names.empty()) names += ")";
     ThrowInputError(
         file, field,
-        fmt::format("an obstacle has exactly one key, its shape (box, cylinder, wall, prism or "
-                    "chessboard); "
+        fmt::format("an obstacle has exactly one key, its shape (box, cylinder, wall, prism, "
+                    "grid or chessboard); "
                     "got {}{}",
                     keys.size(), names));
   }
   const std::string& shape = keys[0].name;
   if (std::find(std::begin(kShapes), std::end(kShapes), shape) == std::end(kShapes)) {
     ThrowInputError(file, keys[0].line, JoinFieldPath(field.path, shape),
-                    "unknown shape (expected box, cylinder, wall, prism or chessboard)");
+                    "unknown shape (expected box, cylinder, wall, prism, grid or chessboard)");
   }
   const YamlField shape_field = item.Required(shape);
   try {
@@ -388,6 +445,8 @@ std::string_view ShapeName(sim::Solid::Kind kind) {
       return "wall";
     case sim::Solid::Kind::kPrism:
       return "prism";
+    case sim::Solid::Kind::kGridBlock:
+      return "grid";
     case sim::Solid::Kind::kBoundaryWall:
       break;
   }
@@ -401,6 +460,7 @@ struct Obstacles {
   std::vector<std::size_t> items;
   std::vector<int> lines;
   std::vector<sim::Chessboard> chessboards;
+  std::vector<GridItem> grids;
 };
 
 Obstacles ReadObstacles(const std::string& file, const YamlMap& map) {
@@ -410,6 +470,10 @@ Obstacles ReadObstacles(const std::string& file, const YamlMap& map) {
     for (std::size_t i = 0; i < items.size(); ++i) {
       if (IsChessboardItem(items[i])) {
         out.chessboards.push_back(ReadChessboard(file, Index(items[i], i)));
+        continue;
+      }
+      if (IsGridItem(items[i])) {
+        out.grids.push_back(ReadGrid(file, Index(items[i], i), i));
         continue;
       }
       out.solids.push_back(ReadObstacle(file, Index(items[i], i)));
@@ -491,6 +555,17 @@ sim::World ParseWorld(const YAML::Node& node, const std::string& file) {
   sim::Light light;
   if (const auto field = map.Optional("light")) light = ReadLight(file, *field);
   RobotField robot = ReadRobot(file, map.Required("robot"));
+  for (GridItem& grid : obstacles.grids) {
+    if (grid.seal) {
+      grid.grid =
+          sim::SealUnreachable(grid.grid, robot.spec.radius, robot.spec.start.translation());
+    }
+    for (sim::Solid& solid : sim::BlockGridSolids(grid.grid, grid.height, grid.colour)) {
+      obstacles.solids.push_back(std::move(solid));
+      obstacles.items.push_back(grid.item);
+      obstacles.lines.push_back(grid.line);
+    }
+  }
 
   std::optional<sim::World> world;
   try {

@@ -507,7 +507,7 @@ const WorldBadCase kWorldBadCases[] = {
      "  - cylinder: {centre: [1.10, 0.30], radius: 0.05, height: 0.10, colour: [40, 160, 40]}\n"
      "    box: {centre: [1.5, 1.0], size: [0.1, 0.1], height: 0.1, colour: [1, 2, 3]}\n",
      "obstacles[1]", 13,
-     "exactly one key, its shape (box, cylinder, wall, prism or chessboard); got 2 "
+     "exactly one key, its shape (box, cylinder, wall, prism, grid or chessboard); got 2 "
      "(cylinder, box)"},
     {"ObstacleWithNoShape",
      "  - prism: {points: [[1.0, 1.0], [1.2, 1.0], [1.1, 1.2]], height: "
@@ -706,6 +706,65 @@ TEST(WorldFileTest, RefusesBadChessboards) {
             "obstacles[0].chessboard.square");
   EXPECT_EQ(error_for("{centre: [1, 1], cols: 9, rows: 6, square: 0.02, size: 3}").field(),
             "obstacles[0].chessboard.size");
+}
+
+// A grid obstacle: a 4 x 3 map at 0.5 m beside the world file, its occupied
+// and unknown cells standing as blocks from the world's (0, 0).
+TEST(WorldFileTest, AGridStandsTheMapsCellsUpAsBlocks) {
+  const TempDir dir;
+  dir.Write("cam.yaml", kWorldCamera);
+  // Top row first: the top row occupied, unknown, free, free.
+  dir.Write("maps/m.pgm", "P2\n4 3\n255\n0 205 254 254\n254 254 254 254\n254 254 254 0\n");
+  dir.Write("maps/m.yaml",
+            "image: m.pgm\nresolution: 0.5\norigin: [-7, 3, 0]\nnegate: 0\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const std::string grid =
+      "obstacles:\n  - grid: {map: maps/m.yaml, height: 0.3, colour: [1, 2, 3]}\n";
+  std::string world = kWorld;
+  const std::size_t from = world.find("obstacles:");
+  const std::size_t to = world.find("light:");
+  world.replace(from, to - from, grid);
+  world = Edited(world, "start: [0.20, 0.20, 45]", "start: [0.75, 0.75, 45]");
+  const sim::World w = LoadWorldFile(dir.Write("world.yaml", world));
+  EXPECT_TRUE(w.IsOccupied({0.25, 1.25}));   // occupied, top left
+  EXPECT_TRUE(w.IsOccupied({0.75, 1.25}));   // unknown
+  EXPECT_FALSE(w.IsOccupied({1.25, 1.25}));  // free
+  EXPECT_TRUE(w.IsOccupied({1.75, 0.25}));   // occupied, bottom right
+  EXPECT_FALSE(w.IsOccupied({1.25, 0.25}));
+  std::size_t grid_solids = 0;
+  for (const sim::Solid& solid : w.obstacles()) {
+    if (solid.kind == sim::Solid::Kind::kGridBlock) {
+      ++grid_solids;
+      EXPECT_EQ(solid.height, 0.3);
+      EXPECT_EQ(solid.colour, (core::Rgb{1, 2, 3}));
+    }
+  }
+  EXPECT_EQ(grid_solids, 2U);  // the top row's run and the lone cell
+
+  // A start on a block is named with the grid's line.
+  const std::string on_block = Edited(world, "start: [0.75, 0.75, 45]", "start: [1.6, 0.4, 0]");
+  const core::InputError error =
+      ExpectInputError([&] { LoadWorldFile(dir.Write("world.yaml", on_block)); });
+  EXPECT_EQ(error.field(), "robot.start");
+  EXPECT_NE(std::string(error.what()).find("the grid on line 12"), std::string::npos)
+      << error.what();
+
+  // A missing map, a missing height, a seal that is not a boolean.
+  for (const auto& [edit, field] : std::vector<std::pair<std::string, std::string>>{
+           {"map: maps/none.yaml", "obstacles[0].grid.map"},
+           {"height: 0.3, ", "obstacles[0].grid.height"},
+           {"colour: [1, 2, 3]", "obstacles[0].grid"}}) {
+    std::string bad = world;
+    if (field == "obstacles[0].grid") {
+      bad = Edited(world, "colour: [1, 2, 3]}", "colour: [1, 2, 3], seal: 3}");
+    } else if (field == "obstacles[0].grid.map") {
+      bad = Edited(world, "map: maps/m.yaml", edit);
+    } else {
+      bad = Edited(world, edit, "");
+    }
+    const core::InputError e = ExpectInputError([&] { LoadWorldFile(dir.Write("bad.yaml", bad)); });
+    EXPECT_EQ(e.field().substr(0, field.size()), field) << edit << ": " << e.what();
+  }
 }
 
 }  // namespace

@@ -91,7 +91,9 @@ std::string RobotText(const sim::RobotFileSpec& robot) {
 
 }  // namespace
 
-std::string WorldFileText(const sim::WorldSpec& spec) {
+std::string WorldFileText(const sim::WorldSpec& spec) { return WorldFileText(spec, {}); }
+
+std::string WorldFileText(const sim::WorldSpec& spec, const std::vector<GridFileSpec>& grids) {
   std::string out;
   std::istringstream comment(spec.comment);
   for (std::string line; std::getline(comment, line);) {
@@ -109,8 +111,12 @@ std::string WorldFileText(const sim::WorldSpec& spec) {
     out += "  thickness: " + Number(spec.walls->thickness) + "\n";
     out += "  colour: " + Colour(spec.walls->colour) + "\n";
   }
-  if (!spec.obstacles.empty()) {
+  if (!spec.obstacles.empty() || !grids.empty()) {
     out += "obstacles:\n";
+    for (const GridFileSpec& g : grids) {
+      out += fmt::format("  - grid: {{map: {}, height: {}, colour: {}{}}}\n", Quoted(g.map),
+                         Number(g.height), Colour(g.colour), g.seal ? ", seal: true" : "");
+    }
     for (const sim::ObstacleSpec& o : spec.obstacles) out += ObstacleLine(o) + "\n";
   }
   const sim::Light& light = spec.light;

@@ -40,7 +40,7 @@ struct Circle {
 // Every obstacle and wall is a vertical prism standing on the floor: a
 // footprint extruded from z = 0 to `height`.
 struct Solid {
-  enum class Kind { kBox, kCylinder, kWall, kPrism, kBoundaryWall };
+  enum class Kind { kBox, kCylinder, kWall, kPrism, kBoundaryWall, kGridBlock };
 
   Kind kind = Kind::kBox;
   // The footprint as a simple polygon, counter-clockwise. For a cylinder, the
