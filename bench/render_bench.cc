@@ -15,6 +15,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
 
 #include "bench_worlds.h"
 #include "pirouette/core/angle.h"
@@ -22,6 +25,7 @@
 #include "pirouette/sim/ray_caster.h"
 #include "pirouette/sim/renderer.h"
 #include "pirouette/sim/world_spec.h"
+#include "pirouette/tools/world_from_map.h"
 #include "pirouette/tools/world_generate.h"
 
 namespace {
@@ -93,6 +97,24 @@ const World& Apartment() {
   return world;
 }
 
+// The real office's twin (../shared/realdata/maps/tb3_office, made as
+// `world from-map` makes it), where the data are present.
+const World* OfficeTwin() {
+  static const std::unique_ptr<World> world = []() -> std::unique_ptr<World> {
+    pirouette::tools::WorldFromMapRequest request;
+    request.map_path =
+        std::string(PIROUETTE_SHARED_DIR) + "/realdata/maps/tb3_office/map_office_raw.yaml";
+    if (!std::filesystem::exists(request.map_path)) return nullptr;
+    request.out_path =
+        (std::filesystem::temp_directory_path() / "pirouette_bench_office.yaml").string();
+    pirouette::tools::RunWorldFromMap(request);
+    auto loaded = std::make_unique<World>(pirouette::io::LoadWorldFile(request.out_path));
+    std::filesystem::remove(request.out_path);
+    return loaded;
+  }();
+  return world.get();
+}
+
 // A pirouette at the world's start, 30 degrees a frame.
 void RenderWorld(benchmark::State& state, const World& world) {
   pirouette::sim::Renderer renderer(world, world.robot().camera, {});
@@ -110,6 +132,16 @@ void RenderWorld(benchmark::State& state, const World& world) {
 BENCHMARK_CAPTURE(RenderWorld, grid, GridWorld20m())
     ->Name("render/grid-20m-5cm/640x480")
     ->Unit(benchmark::kMillisecond);
+void RenderOfficeTwin(benchmark::State& state) {
+  const World* world = OfficeTwin();
+  if (world == nullptr) {
+    state.SkipWithError("no ../shared/realdata/maps/tb3_office");
+    return;
+  }
+  RenderWorld(state, *world);
+}
+
+BENCHMARK(RenderOfficeTwin)->Name("render/twin-tb3-office/640x480")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(RenderWorld, apartment, Apartment())
     ->Name("render/apartment/640x480")
     ->Unit(benchmark::kMillisecond);
