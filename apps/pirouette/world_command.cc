@@ -90,8 +90,8 @@ constexpr const char* kFromMapHelp =
     "the point of the largest region the disc can drive in that lies farthest from its walls, "
     "unless --start gives one. The world names the map by its path (relative to the world "
     "file), so keep the map where it is.\n"
-    "  example: pirouette world from-map --map ../shared/realdata/maps/tb3_office/map.yaml "
-    "--out office.yaml";
+    "  example: pirouette world from-map --map ../shared/realdata/maps/sim_tb3_world/map.yaml "
+    "--out tb3_world.yaml";
 
 // `world from-map`.
 Command AddWorldFromMap(CLI::App& world) {
