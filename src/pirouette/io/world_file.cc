@@ -267,14 +267,7 @@ GridItem ReadGrid(const std::string& file, const YamlField& field, std::size_t i
   if (!fs::is_regular_file(path, error)) {
     ThrowInputError(file, map_field, fmt::format("map file '{}' not found", path.string()));
   }
-  const io::MapServerMap read = io::ReadMapServerMap(path.string());
-  sim::BlockGrid grid{core::GridGeometry(read.geometry.resolution(), Eigen::Vector2d::Zero(),
-                                         read.geometry.width(), read.geometry.height()),
-                      {}};
-  // Only what map_server serves as free (0) is floor: occupied, unknown and
-  // the values between (scale and raw modes) are blocks.
-  grid.solid.reserve(read.cells.size());
-  for (const std::int8_t v : read.cells) grid.solid.push_back(v == io::kMapFree ? 0 : 1);
+  sim::BlockGrid grid = BlocksOfMap(io::ReadMapServerMap(path.string()));
   const double height = ReadPositive(file, map.Required("height"));
   const core::Rgb colour = ReadColour(file, map.Required("colour"));
   bool seal = false;
@@ -579,6 +572,15 @@ sim::World ParseWorld(const YAML::Node& node, const std::string& file) {
 }
 
 }  // namespace
+
+sim::BlockGrid BlocksOfMap(const MapServerMap& map) {
+  const core::GridGeometry& g = map.geometry;
+  sim::BlockGrid grid{
+      core::GridGeometry(g.resolution(), Eigen::Vector2d::Zero(), g.width(), g.height()), {}};
+  grid.solid.reserve(map.cells.size());
+  for (const std::int8_t v : map.cells) grid.solid.push_back(v == kMapFree ? 0 : 1);
+  return grid;
+}
 
 sim::World LoadWorldFile(const std::string& path) {
   return ParseWorld(io::LoadYamlFile(path), path);

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "pirouette/io/map_file.h"
+#include "pirouette/sim/block_grid.h"
 #include "pirouette/sim/world.h"
 
 namespace pirouette::io {
@@ -12,5 +14,11 @@ namespace pirouette::io {
 // missing required keys, wrong types, negative sizes, colours outside 0..255,
 // and a start pose that overlaps an obstacle or leaves the floor.
 sim::World LoadWorldFile(const std::string& path);
+
+// A `grid` obstacle's blocks (SPEC.md): the map's cells, its lower-left
+// corner at the world's (0, 0); a block wherever map_server does not serve
+// the cell as free (0): occupied, unknown and, in scale and raw modes, the
+// values between.
+sim::BlockGrid BlocksOfMap(const MapServerMap& map);
 
 }  // namespace pirouette::io

@@ -11,6 +11,7 @@
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/camera_file.h"
+#include "pirouette/io/world_file.h"
 #include "pirouette/io/world_writer.h"
 #include "pirouette/sim/block_grid.h"
 #include "pirouette/sim/world_generator.h"
@@ -50,9 +51,7 @@ WorldFromMapResult RunWorldFromMap(const WorldFromMapRequest& request) {
   }
   WorldFromMapResult result{"", io::ReadMapServerMap(request.map_path)};
   const core::GridGeometry& g = result.map.geometry;
-  sim::BlockGrid grid{
-      core::GridGeometry(g.resolution(), Eigen::Vector2d::Zero(), g.width(), g.height()), {}};
-  for (const std::int8_t v : result.map.cells) grid.solid.push_back(v == io::kMapFree ? 0 : 1);
+  const sim::BlockGrid grid = io::BlocksOfMap(result.map);
   result.free_cells = grid.solid.size() - grid.SolidCount();
 
   double heading_deg = 0.0;
