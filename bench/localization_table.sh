@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# The pose tracking table (docs/measurements.md, "Pose tracking"): every shipped world, seeds 1..N, with
-# odometry noise of 5% translation and 5% rotation, explored with
-# --localize none and --localize scan, and with scan and no noise (what the
-# tracker costs where there is nothing to correct). Prints a Markdown table.
+# The pose tracking table (docs/measurements.md, "Pose tracking" and "Pose
+# graph"): every shipped world, seeds 1..N, with odometry noise of 5%
+# translation and 5% rotation, explored with --localize none and --localize
+# scan, and with scan and no noise (what the tracker costs where there is
+# nothing to correct); MODES="graph:0.05 graph:0" for the pose graph's rows.
+# Prints a Markdown table.
 #   usage: [JOBS=2] [MODES="none:0.05 scan:0.05 scan:0"] \
 #          bench/localization_table.sh [BINARY] [SEEDS]
 #   (default: build/release, 5 seeds, 2 runs at a time, all three modes;
@@ -38,19 +40,24 @@ for d in sorted(os.listdir(out)):
     r = json.load(open(path))
     name, seed, loc = d.rsplit("-", 2)
     rows[(name, loc)].append(r)
-print("| world | localize @ noise | complete | coverage (mean, worst) | false_free (mean, worst) | wall_error_m (mean, worst) | pose error m (mean) | heading error ° (mean) | per matched frame |")
-print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+print("| world | localize @ noise | complete | coverage (mean, worst) | false_free (mean, worst) | wall_error_m (mean, worst) | pose error m (mean) | ATE RMS m (mean) | heading error ° (mean) | localize time |")
+print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
 for (name, loc), rs in sorted(rows.items()):
     e = [r["eval"] for r in rs]
     mean = lambda xs: sum(xs) / len(xs)
     cov = [x["coverage"] for x in e]; ff = [x["false_free"] for x in e]; we = [x["wall_error_m"] for x in e]
     pe = [r["pose_error"]["mean_m"] for r in rs]; pd = [r["pose_error"]["mean_deg"] for r in rs]
-    t = [r["localization"]["time_per_matched_frame_s"] for r in rs if "localization" in r]
+    ate = [r["pose_error"].get("ate_rms_m", 0.0) for r in rs]
+    loc_json = [r["localization"] for r in rs if "localization" in r]
+    if loc_json and "time_per_matched_frame_s" in loc_json[0]:
+        t = f"{mean([l['time_per_matched_frame_s'] for l in loc_json]) * 1000:.1f} ms a matched frame"
+    elif loc_json and "per_stop_s" in loc_json[0]:
+        t = (f"{mean([l['per_stop_s']['mean'] for l in loc_json]) * 1000:.1f} ms a stop (max "
+             f"{max(l['per_stop_s']['max'] for l in loc_json) * 1000:.0f})")
+    else:
+        t = "—"
     print(f"| {name} | {loc} | {sum(r['status'] == 'complete' for r in rs)}/{len(rs)} | "
           f"{mean(cov):.3f}, {min(cov):.3f} | {mean(ff):.4f}, {max(ff):.4f} | {mean(we):.4f}, {max(we):.4f} | "
-          f"{mean(pe):.3f} | {mean(pd):.1f} | {mean(t) * 1000:.1f} ms |" if t else
-          f"| {name} | {loc} | {sum(r['status'] == 'complete' for r in rs)}/{len(rs)} | "
-          f"{mean(cov):.3f}, {min(cov):.3f} | {mean(ff):.4f}, {max(ff):.4f} | {mean(we):.4f}, {max(we):.4f} | "
-          f"{mean(pe):.3f} | {mean(pd):.1f} | — |")
+          f"{mean(pe):.3f} | {mean(ate):.3f} | {mean(pd):.1f} | {t} |")
 PY
 rm -rf "$out"

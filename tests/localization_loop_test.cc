@@ -61,6 +61,41 @@ TEST(LocalizationLoopTest, TrackingTakesOutMostOfThePoseErrorOfNoisyOdometry) {
   EXPECT_EQ(none.matches, 0);
 }
 
+// The pose graph (LocalizeKind::kGraph, docs/measurements.md, "Pose
+// graph"): without noise it keeps the map within the noise-free bounds (its
+// odometry model is the simulator's noise, so a perfect odometry outweighs
+// the matches), and under 5% noise it takes out most of the pose error and of
+// the false free cells.
+TEST(LocalizationLoopTest, TheGraphWithoutOdometryNoiseKeepsTheMapTrue) {
+  const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
+  const ExplorationResult result = ExploreWith(world, LocalizeKind::kGraph, 0.0);
+  EXPECT_EQ(result.status, "complete");
+  const eval::MapEvaluation eval = eval::EvaluateMap(result.grid.ToTrinary(), world);
+  EXPECT_GE(eval.coverage, 0.98);
+  EXPECT_LE(eval.false_free, 0.0005);
+  EXPECT_LE(eval.wall_error_m, 0.01);
+  ASSERT_TRUE(result.pose_error.has_value());
+  EXPECT_LE(result.pose_error->ate_rms_m, 0.01);
+  ASSERT_TRUE(result.graph.has_value());
+  EXPECT_GT(result.graph->NodeCount(), 10U);
+  EXPECT_EQ(result.final_frame_poses.size(), static_cast<std::size_t>(result.frames));
+}
+
+TEST(LocalizationLoopTest, TheGraphTakesOutMostOfThePoseErrorOfNoisyOdometry) {
+  const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
+  const ExplorationResult none = ExploreWith(world, LocalizeKind::kNone, 0.05);
+  const ExplorationResult graph = ExploreWith(world, LocalizeKind::kGraph, 0.05);
+  ASSERT_TRUE(none.pose_error.has_value());
+  ASSERT_TRUE(graph.pose_error.has_value());
+  EXPECT_EQ(graph.status, "complete");
+  EXPECT_LT(graph.pose_error->ate_rms_m, 0.2 * none.pose_error->ate_rms_m);
+  EXPECT_GT(graph.scan_matches, 0);
+  const eval::MapEvaluation none_eval = eval::EvaluateMap(none.grid.ToTrinary(), world);
+  const eval::MapEvaluation graph_eval = eval::EvaluateMap(graph.grid.ToTrinary(), world);
+  EXPECT_LE(graph_eval.false_free, 0.03);
+  EXPECT_LT(graph_eval.false_free, 0.1 * none_eval.false_free);
+}
+
 // Under odometry error the robot can end a move touching a wall it mapped a
 // few centimetres off, beside its front: every move that way then stops at
 // once. In this run (the maze, seed 3, 5% noise) that happens 40 times in a

@@ -97,5 +97,34 @@ TEST_F(RunLogRoundTripTest, ATrackedRunMapsAgainTheSame) {
   EXPECT_NE(Read("untracked", "map.pgm"), Read("explore", "map.pgm"));
 }
 
+// With the pose graph the log records `localize: graph` and the odometry
+// model, and mapping it again builds the same graph and the same map.
+TEST_F(RunLogRoundTripTest, AGraphRunMapsAgainTheSame) {
+  run::ExploreRequest explore;
+  explore.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml";
+  explore.out_dir = Path("explore");
+  explore.record_dir = Path("log");
+  explore.quiet = true;
+  explore.options.localize = LocalizeKind::kGraph;
+  explore.odometry_noise = std::array<double, 2>{0.05, 0.05};
+  const ExploreReport explored = RunExplore(explore);
+  EXPECT_EQ(explored.run["localize"], "graph");
+  EXPECT_EQ(explored.run["localization"]["method"], "graph");
+  const io::RunLog log = io::ReadRunLog(explore.record_dir);
+  EXPECT_EQ(log.info.localize, "graph");
+  ASSERT_TRUE(log.info.odometry_model.has_value());
+  EXPECT_DOUBLE_EQ((*log.info.odometry_model)[0], 0.05);
+
+  run::MapLogRequest map;
+  map.log_dir = explore.record_dir;
+  map.out_dir = Path("map");
+  map.quiet = true;
+  run::RunMapLog(map);
+  EXPECT_EQ(Read("map", "graph.g2o"), Read("explore", "graph.g2o"));
+  EXPECT_EQ(Read("map", "map.pgm"), Read("explore", "map.pgm"));
+  EXPECT_EQ(Read("map", "map_colours.png"), Read("explore", "map_colours.png"));
+  EXPECT_NE(Read("explore", "graph.g2o").find("VERTEX_SE2 0 "), std::string::npos);
+}
+
 }  // namespace
 }  // namespace pirouette::run

@@ -131,14 +131,18 @@ CLI::Option* AddLocalizeOption(CLI::App* app, std::string& kind, std::string_vie
       app->add_option(
              "--localize", kind,
              WithDefault(
-                 "pose tracking. none: trust the odometry; scan: correct each frame's heading by "
+                 "pose tracking. graph: a pose graph over the stops (each stop scan-matched "
+                 "against the earlier stops its view overlaps, loops closed when the robot comes "
+                 "back, optimised after every stop, the map made again from every frame at its "
+                 "stop's new pose; DIR/graph.g2o); none: trust the odometry; scan: correct each "
+                 "frame's heading by "
                  "matching what the camera sees against the earlier frames of the stop and the "
                  "map made before it, turning in steps of a pirouette's with a look after each, "
                  "and each whole pirouette's position and heading by scan matching its hits "
                  "against those of the stops before (cuts pose error and false free cells under "
                  "wheel slip, costs a little without it: docs/measurements.md, \"Pose tracking\")",
                  default_note))
-          ->check(CLI::IsMember({"scan", "none"}));
+          ->check(CLI::IsMember({"graph", "scan", "none"}));
   return ShowDefault(option, default_note);
 }
 

@@ -19,12 +19,16 @@ std::optional<PoseError> PoseErrorOf(const std::vector<core::Pose2>& believed,
                        180.0 / std::numbers::pi;
     error.mean_m += m;
     error.mean_deg += deg;
+    error.ate_rms_m += m * m;
+    error.heading_rms_deg += deg * deg;
     error.max_m = std::max(error.max_m, m);
     error.final_m = m;
     error.final_deg = deg;
   }
   error.mean_m /= static_cast<double>(n);
   error.mean_deg /= static_cast<double>(n);
+  error.ate_rms_m = std::sqrt(error.ate_rms_m / static_cast<double>(n));
+  error.heading_rms_deg = std::sqrt(error.heading_rms_deg / static_cast<double>(n));
   return error;
 }
 

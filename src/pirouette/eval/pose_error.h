@@ -9,13 +9,18 @@ namespace pirouette::eval {
 
 // How far the robot's belief was from the simulator's truth (translation in
 // metres, heading in degrees, absolute): the mean and largest over the
-// frames, each as believed when it was taken, and at the end of the run.
+// frames (each where the caller says it is believed: the explorer gives
+// where the map puts it at the end), and at the end of the run.
 struct PoseError {
   double final_m = 0.0;
   double final_deg = 0.0;
   double mean_m = 0.0;
   double mean_deg = 0.0;
   double max_m = 0.0;
+  // The root mean square over the frames: the absolute trajectory error
+  // (Sturm et al. 2012, without an alignment: the map frame is the start's).
+  double ate_rms_m = 0.0;
+  double heading_rms_deg = 0.0;
 };
 
 // The error of the believed poses against the true ones, frame by frame

@@ -75,6 +75,19 @@ RunLogInfo ReadInfo(const std::string& path) {
     if (map["max_range"]) info.max_range_m = number(map["max_range"], "map.max_range");
     if (map["method"]) info.method = map["method"].as<std::string>("");
     if (map["localize"]) info.localize = map["localize"].as<std::string>("");
+    if (const YAML::Node model = map["odometry_model"]) {
+      if (!model.IsSequence() || model.size() != 2) {
+        throw core::InputError(path, model.Mark().line + 1, "map.odometry_model",
+                               "must be [translation, rotation], fractions >= 0");
+      }
+      const double t = number(model[0], "map.odometry_model");
+      const double r = number(model[1], "map.odometry_model");
+      if (!(t >= 0.0 && t <= 1.0) || !(r >= 0.0 && r <= 1.0)) {
+        throw core::InputError(path, model.Mark().line + 1, "map.odometry_model",
+                               "fractions must be between 0 and 1");
+      }
+      info.odometry_model = std::array<double, 2>{t, r};
+    }
   }
   if (const YAML::Node source = root["source"]) {
     if (source["world"]) info.world = source["world"].as<std::string>("");
@@ -100,6 +113,10 @@ std::string InfoText(const RunLogInfo& info) {
   out << YAML::Key << "max_range" << YAML::Value << info.max_range_m;
   out << YAML::Key << "method" << YAML::Value << info.method;
   if (!info.localize.empty()) out << YAML::Key << "localize" << YAML::Value << info.localize;
+  if (info.odometry_model) {
+    out << YAML::Key << "odometry_model" << YAML::Value << YAML::Flow << YAML::BeginSeq
+        << (*info.odometry_model)[0] << (*info.odometry_model)[1] << YAML::EndSeq;
+  }
   out << YAML::EndMap;
   if (!info.world.empty()) {
     out << YAML::Key << "source" << YAML::Value << YAML::BeginMap << YAML::Key << "world"

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <fstream>
 #include <optional>
@@ -30,9 +31,12 @@ struct RunLogInfo {
   double cell_m = 0.0;       // the map's cell the run used (0: not said)
   double max_range_m = 0.0;  // the readings' trusted range (0: not said)
   std::string method;        // segmentation: "default", "paper" (empty: not said)
-  std::string localize;      // pose tracking: "scan", "none" (empty: not said, none)
-  std::string world;         // the simulated world's file, as given (empty: a real robot)
-  std::uint64_t seed = 0;    // the simulator's seed
+  std::string localize;      // pose tracking: "graph", "scan", "none" (empty: not said, none)
+  // The pose graph's odometry model (standard deviations as fractions of a
+  // move and of a turn: localize::OdometryModel); none: not said.
+  std::optional<std::array<double, 2>> odometry_model;
+  std::string world;       // the simulated world's file, as given (empty: a real robot)
+  std::uint64_t seed = 0;  // the simulator's seed
 };
 
 struct RunLogRow {

@@ -102,6 +102,11 @@ void PoseGraph::AddEdge(const PoseGraphEdge& edge) {
     throw std::invalid_argument(
         "PoseGraph::AddEdge: information is not symmetric positive definite");
   }
+  if (edge.kind == EdgeKind::kOdometry && edge.to == edge.from + 1) {
+    const auto k = static_cast<std::size_t>(edge.from);
+    if (odometry_of_.size() <= k) odometry_of_.resize(k + 1, -1);
+    if (odometry_of_[k] < 0) odometry_of_[k] = static_cast<int>(edges_.size());
+  }
   edges_.push_back(edge);
 }
 
@@ -112,10 +117,9 @@ Eigen::Matrix3d PoseGraph::PredictedCovariance(int from, int to) const {
   core::Pose2 p;
   Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
   for (int k = lo; k < hi; ++k) {
-    const auto edge = std::find_if(edges_.begin(), edges_.end(), [k](const PoseGraphEdge& e) {
-      return e.kind == EdgeKind::kOdometry && e.from == k && e.to == k + 1;
-    });
-    if (edge == edges_.end()) return Eigen::Matrix3d::Zero();
+    const auto index = static_cast<std::size_t>(k);
+    if (index >= odometry_of_.size() || odometry_of_[index] < 0) return Eigen::Matrix3d::Zero();
+    const PoseGraphEdge* edge = &edges_[static_cast<std::size_t>(odometry_of_[index])];
     // The step at the current poses, with the measurement's covariance.
     const core::Pose2 step = pose(k).Inverse() * pose(k + 1);
     const double c = std::cos(p.heading());
@@ -165,9 +169,12 @@ OptimiseSummary PoseGraph::Optimise(const PoseGraphOptions& options) {
         Eigen::LLT<Eigen::Matrix3d>(edge.information).matrixL().transpose();
     auto* cost = new ceres::AutoDiffCostFunction<EdgeResidual, 3, 2, 1, 2, 1>(
         new EdgeResidual(edge.from_T_to, sqrt_information));
-    ceres::LossFunction* loss = edge.kind == EdgeKind::kLoopClosure
-                                    ? new ceres::HuberLoss(options.loop_closure_huber)
-                                    : nullptr;
+    ceres::LossFunction* loss = nullptr;
+    if (edge.kind == EdgeKind::kLoopClosure) {
+      loss = new ceres::HuberLoss(options.loop_closure_huber);
+    } else if (edge.kind == EdgeKind::kScanMatch && options.scan_match_huber > 0.0) {
+      loss = new ceres::HuberLoss(options.scan_match_huber);
+    }
     const auto a = static_cast<std::size_t>(edge.from);
     const auto b = static_cast<std::size_t>(edge.to);
     problem.AddResidualBlock(cost, loss, xy[a].data(), &theta[a], xy[b].data(), &theta[b]);

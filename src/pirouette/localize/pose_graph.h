@@ -37,6 +37,8 @@ struct PoseGraphOptions {
   // grows linearly, so that one false closure cannot bend the map
   // (Huber 1964; the robust kernels of g2o and Ceres).
   double loop_closure_huber = 1.0;
+  // The same for scan-match edges (0: none, plain least squares).
+  double scan_match_huber = 0.0;
   int max_iterations = 50;
 };
 
@@ -88,6 +90,8 @@ class PoseGraph {
  private:
   std::vector<core::Pose2> poses_;
   std::vector<PoseGraphEdge> edges_;
+  // odometry_of_[k]: the index in edges_ of the first odometry edge k → k+1, or -1.
+  std::vector<int> odometry_of_;
 };
 
 }  // namespace pirouette::localize

@@ -124,18 +124,17 @@ std::vector<core::Pose2> PoseTracker::Track(const mapping::OccupancyGrid& before
   return poses;
 }
 
-std::vector<Eigen::Vector2d> PoseTracker::StopHits() const {
-  // The nearest hit in each degree of bearing around the stop (the ROP's
-  // bins): the frames overlap, and a bearing's nearest hit is the one the
-  // others hide behind.
+std::vector<Eigen::Vector2d> NearestHitEachDegree(const std::vector<HeadedView>& views,
+                                                  double max_range_m) {
+  // The ROP's bins: the frames overlap, and a bearing's nearest hit is the
+  // one the others hide behind.
   constexpr int kBins = mapping::kRadialProfileBins;
   std::vector<Eigen::Vector2d> nearest(kBins, Eigen::Vector2d::Zero());
   std::vector<double> range(kBins, std::numeric_limits<double>::infinity());
-  const double max_range_m = options_.hit_range_factor * map_range_m_;
-  for (const StopFrame& f : stop_) {
-    for (const core::RangeReading& r : f.profile.readings) {
+  for (const HeadedView& view : views) {
+    for (const core::RangeReading& r : view.profile->readings) {
       if (r.kind != core::ReadingKind::kHit || r.range_m > max_range_m) continue;
-      const double bearing = core::NormalizeAngle(f.heading_rad + r.bearing_rad);
+      const double bearing = core::NormalizeAngle(view.heading_rad + r.bearing_rad);
       const int bin = std::clamp(static_cast<int>(std::floor((bearing + std::numbers::pi) /
                                                              (2.0 * std::numbers::pi) * kBins)),
                                  0, kBins - 1);
@@ -150,6 +149,12 @@ std::vector<Eigen::Vector2d> PoseTracker::StopHits() const {
     if (std::isfinite(range[b])) out.push_back(nearest[b]);
   }
   return out;
+}
+
+std::vector<Eigen::Vector2d> PoseTracker::StopHits() const {
+  std::vector<HeadedView> views;
+  for (const StopFrame& f : stop_) views.push_back({&f.profile, f.heading_rad});
+  return NearestHitEachDegree(views, options_.hit_range_factor * map_range_m_);
 }
 
 void PoseTracker::AddStopHits() {

@@ -71,6 +71,12 @@ struct TrackerOptions {
   void Check() const;
 };
 
+// A stop's hits from its frames' profiles (each turned by its heading), out
+// to max_range_m: the nearest hit in each degree of bearing around the stop
+// (mapping::kRadialProfileBins bins), as offsets from the stop's position.
+std::vector<Eigen::Vector2d> NearestHitEachDegree(const std::vector<HeadedView>& views,
+                                                  double max_range_m);
+
 // Pose tracking by matching what the camera sees against what it saw, a
 // stop at a time (Taylor, Geva & Boles 2005 name localization as the next
 // step). The robot looks only while it stands (a

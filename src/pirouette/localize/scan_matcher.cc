@@ -172,7 +172,8 @@ int Overlap(const LikelihoodField& field, const std::vector<std::ptrdiff_t>& cel
 
 struct Candidate {
   Eigen::Vector3d offset;
-  double log_posterior;
+  double log_likelihood;  // the hits' summed agreement over options.correlation
+  double log_prior;       // less the prior's Mahalanobis term
 };
 
 // Every correction of the window with its log posterior: the hits' summed
@@ -201,34 +202,44 @@ std::vector<Candidate> ScoreCandidates(const LikelihoodField& field, const Eigen
         }
         const Eigen::Vector3d offset(ix * cell, iy * cell, theta);
         candidates.push_back(
-            {offset, sum / options.correlation - 0.5 * offset.dot(information * offset)});
+            {offset, sum / options.correlation, -0.5 * offset.dot(information * offset)});
       }
     }
   }
   return candidates;
 }
 
-// The posterior's mean and covariance over the candidates (Olson 2009, as
-// Karto computes the match's covariance from its response surface).
-void PosteriorMoments(const std::vector<Candidate>& candidates, ScanMatch& result) {
-  double best = -std::numeric_limits<double>::infinity();
-  for (const Candidate& c : candidates) best = std::max(best, c.log_posterior);
-  double total = 0.0;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+// The mean and covariance over the candidates of the posterior (with_prior)
+// or of the likelihood alone (Olson 2009, as Karto computes the match's
+// covariance from its response surface); `best` is set to the most likely
+// candidate's offset.
+void Moments(const std::vector<Candidate>& candidates, bool with_prior, Eigen::Vector3d& mean,
+             Eigen::Matrix3d& covariance, Eigen::Vector3d& best) {
+  const auto score = [with_prior](const Candidate& c) {
+    return with_prior ? c.log_likelihood + c.log_prior : c.log_likelihood;
+  };
+  double top = -std::numeric_limits<double>::infinity();
   for (const Candidate& c : candidates) {
-    const double w = std::exp(c.log_posterior - best);
+    if (score(c) > top) {
+      top = score(c);
+      best = c.offset;
+    }
+  }
+  double total = 0.0;
+  mean = Eigen::Vector3d::Zero();
+  for (const Candidate& c : candidates) {
+    const double w = std::exp(score(c) - top);
     total += w;
     mean += w * c.offset;
   }
   mean /= total;
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  covariance = Eigen::Matrix3d::Zero();
   for (const Candidate& c : candidates) {
-    const double w = std::exp(c.log_posterior - best);
+    const double w = std::exp(score(c) - top);
     const Eigen::Vector3d d = c.offset - mean;
     covariance += w * d * d.transpose();
   }
-  result.offset = mean;
-  result.covariance = covariance / total;
+  covariance /= total;
 }
 
 }  // namespace
@@ -247,8 +258,19 @@ ScanMatch MatchScan(const HitStore& reference, const Eigen::Vector2d& origin,
   PlaceHits(field, origin, hit_offsets, options.cell_m, 0.0, cells);
   result.overlap = Overlap(field, cells, options);
   if (result.overlap < options.min_overlap) return result;
-  PosteriorMoments(ScoreCandidates(field, origin, hit_offsets, window, prior_covariance, options),
-                   result);
+  const std::vector<Candidate> candidates =
+      ScoreCandidates(field, origin, hit_offsets, window, prior_covariance, options);
+  Eigen::Vector3d best = Eigen::Vector3d::Zero();
+  Moments(candidates, true, result.offset, result.covariance, best);
+  Moments(candidates, false, result.likelihood_offset, result.likelihood_covariance, best);
+  // The overlap at the likelihood's best: its heading, then its shift in cells.
+  PlaceHits(field, origin, hit_offsets, options.cell_m, best.z(), cells);
+  const std::ptrdiff_t shift =
+      static_cast<std::ptrdiff_t>(std::lround(best.y() / options.cell_m)) * field.size +
+      static_cast<std::ptrdiff_t>(std::lround(best.x() / options.cell_m));
+  for (std::ptrdiff_t& c : cells) c += shift;
+  result.response =
+      static_cast<double>(Overlap(field, cells, options)) / static_cast<double>(hit_offsets.size());
   result.accepted = true;
   return result;
 }

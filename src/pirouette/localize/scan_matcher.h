@@ -55,7 +55,16 @@ class HitStore {
 struct ScanMatch {
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  // the posterior's
-  int overlap = 0;        // hits near a reference hit at the prior's mean
+  // The same moments of the likelihood alone (no prior): what the match
+  // itself measured, for a pose graph's edge, whose other edges already carry
+  // what the prior knew. A direction the hits do not pin spreads over the
+  // whole window (a corridor's length: variance about window²/3).
+  Eigen::Vector3d likelihood_offset = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d likelihood_covariance = Eigen::Matrix3d::Zero();
+  int overlap = 0;  // hits near a reference hit at the prior's mean
+  // The share of the hits within 2σ of a reference hit at the likelihood's
+  // best correction (0 to 1): how well the scan fits the reference at all.
+  double response = 0.0;
   bool accepted = false;  // else offset 0 and covariance the prior's
 };
 

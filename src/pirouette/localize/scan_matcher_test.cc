@@ -108,6 +108,26 @@ TEST(ScanMatcherTest, ACorridorKeepsThePriorAlongItsLength) {
   EXPECT_LT(std::abs(match.offset.x()), 0.02);
   EXPECT_GT(std::sqrt(match.covariance(0, 0)), 0.03);
   EXPECT_LT(std::sqrt(match.covariance(1, 1)), 0.01);
+  // The likelihood alone (a pose graph's edge): as sure across, and along
+  // spread over the whole search window (±15 cm: about 8.7 cm), far more
+  // than the prior's, so the edge says nothing along the corridor.
+  EXPECT_NEAR(match.likelihood_offset.y(), -0.03, 0.01);
+  EXPECT_LT(std::sqrt(match.likelihood_covariance(1, 1)), 0.01);
+  EXPECT_GT(std::sqrt(match.likelihood_covariance(0, 0)), 0.07);
+  EXPECT_GT(match.likelihood_covariance(0, 0), 10.0 * match.likelihood_covariance(1, 1));
+  // Every hit lies on a wall at the best correction.
+  EXPECT_GT(match.response, 0.95);
+}
+
+TEST(ScanMatcherTest, TheResponseIsTheShareOfHitsOnTheReference) {
+  // Half the scan is ground the reference never saw: about half respond.
+  const HitStore reference = Store(Corridor(0.005, 0.0));
+  std::vector<Eigen::Vector2d> offsets = Offsets(Corridor(0.007, 0.5), {0.0, 0.5}, 0.0, 1.5);
+  const std::size_t seen = offsets.size();
+  for (std::size_t i = 0; i < seen; ++i) offsets.emplace_back(0.3 + 0.01 * i, 2.0 + 0.37 * i);
+  const ScanMatch match = MatchScan(reference, {0.0, 0.5}, offsets, Prior(0.02, 1.0 * kDeg));
+  ASSERT_TRUE(match.accepted);
+  EXPECT_NEAR(match.response, 0.5, 0.05);
 }
 
 TEST(ScanMatcherTest, WithNothingToMatchAgainstDoesNotMove) {

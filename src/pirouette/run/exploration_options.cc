@@ -18,13 +18,29 @@ std::optional<PlannerKind> ParsePlannerKind(std::string_view name) {
 }
 
 std::string_view LocalizeKindName(LocalizeKind kind) {
-  return kind == LocalizeKind::kScan ? "scan" : "none";
+  switch (kind) {
+    case LocalizeKind::kScan:
+      return "scan";
+    case LocalizeKind::kGraph:
+      return "graph";
+    case LocalizeKind::kNone:
+      break;
+  }
+  return "none";
 }
 
 std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name) {
   if (name == "none") return LocalizeKind::kNone;
   if (name == "scan") return LocalizeKind::kScan;
+  if (name == "graph") return LocalizeKind::kGraph;
   return std::nullopt;
+}
+
+localize::OdometryModel OdometryModelOf(const core::OdometryNoise& noise) {
+  localize::OdometryModel model;
+  model.translation_fraction = std::hypot(noise.translation, noise.translation_bias);
+  model.rotation_fraction = std::hypot(noise.rotation, noise.rotation_bias);
+  return model;
 }
 
 void CheckExplorationOptions(const ExplorationOptions& options) {

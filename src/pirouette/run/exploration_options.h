@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "pirouette/core/odometry_noise.h"
+#include "pirouette/localize/graph_tracker.h"
 #include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/vision/mask_source.h"
@@ -16,10 +17,12 @@ enum class PlannerKind { kDistanceTransform, kFrontier };
 
 // How the explorer keeps its pose: kNone trusts the odometry; kScan corrects
 // each frame's heading against the earlier frames of its stop and the map
-// (localize::PoseTracker; docs/measurements.md, "Pose tracking").
-enum class LocalizeKind { kNone, kScan };
+// (localize::PoseTracker; docs/measurements.md, "Pose tracking"); kGraph, the
+// default, keeps a pose graph over the stops and makes the map again from it
+// (localize::GraphTracker).
+enum class LocalizeKind { kNone, kScan, kGraph };
 
-// "none" | "scan", the command line's and run.json's names.
+// "none" | "scan" | "graph", the command line's and run.json's names.
 std::string_view LocalizeKindName(LocalizeKind kind);
 std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name);
 
@@ -62,12 +65,20 @@ struct ExplorationOptions {
   // Pose tracking, and what it assumes of the odometry.
   LocalizeKind localize = LocalizeKind::kNone;
   localize::TrackerOptions tracker;
+  // The graph's options; in the simulator its odometry model is the world's
+  // noise (OdometryModelOf).
+  localize::GraphTrackerOptions graph;
   // The simulator's motion error; none: the world file's odometry_noise.
   std::optional<core::OdometryNoise> odometry_noise;
   // Checked between steps; when it becomes true the run ends with status
   // "interrupted" and the map so far.
   const std::atomic<bool>* stop_requested = nullptr;
 };
+
+// The graph's odometry model for a simulated robot of this noise: the
+// standard deviations with the biases (a bias is an error the graph cannot
+// tell from noise), in quadrature.
+localize::OdometryModel OdometryModelOf(const core::OdometryNoise& noise);
 
 // Throws core::InputError naming the option for a bad value.
 void CheckExplorationOptions(const ExplorationOptions& options);

@@ -11,6 +11,7 @@
 #include "pirouette/core/pose2.h"
 #include "pirouette/eval/pose_error.h"
 #include "pirouette/localize/colour_map.h"
+#include "pirouette/localize/pose_graph.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/robot/robot.h"
 
@@ -65,6 +66,18 @@ struct ExplorationResult {
   // Where the robot believed each frame was taken when it took it (the
   // tracker may move a stop's earlier frames later, in the map only).
   std::vector<core::Pose2> frame_poses;
+  // Where every frame is in the map at the end (the tracker or the graph may
+  // have moved it since it was taken).
+  std::vector<core::Pose2> final_frame_poses;
+  // With the graph: the graph itself (DIR/graph.g2o), its loop closures,
+  // and the time it took.
+  std::optional<localize::PoseGraph> graph;
+  int loop_closures_accepted = 0;
+  int loop_closures_rejected = 0;
+  double optimise_s = 0.0;
+  std::vector<double> per_stop_s;  // matching + optimising, per stop
+  double rebuild_s = 0.0;          // making the map again when stops moved
+  int rebuilds = 0;
   int matches = 0;       // frames the tracker saw
   int corrections = 0;   // of them, those turned by a match with their stop's earlier frames
   int scan_matches = 0;  // stops moved by a scan match against the stops before

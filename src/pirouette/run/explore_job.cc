@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/camera_file.h"
 #include "pirouette/io/colour_map_file.h"
+#include "pirouette/io/graph_file.h"
 #include "pirouette/io/image_io.h"
 #include "pirouette/io/map_file.h"
 #include "pirouette/io/run_log.h"
@@ -60,8 +62,29 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
                          {"plan", Round(result.times.plan_s, 1e-4)},
                          {"localize", Round(result.times.localize_s, 1e-4)}};
   run["localize"] = LocalizeKindName(request.options.localize);
-  if (request.options.localize == LocalizeKind::kScan) {
+  if (request.options.localize == LocalizeKind::kGraph && result.graph) {
+    double mean = 0.0;
+    double most = 0.0;
+    for (const double t : result.per_stop_s) {
+      mean += t;
+      most = std::max(most, t);
+    }
+    if (!result.per_stop_s.empty()) mean /= static_cast<double>(result.per_stop_s.size());
     run["localization"] = {
+        {"method", "graph"},
+        {"stops", result.graph->NodeCount()},
+        {"edges", result.graph->edges().size()},
+        {"scan_matches", result.scan_matches},
+        {"loop_closures",
+         {{"accepted", result.loop_closures_accepted},
+          {"rejected", result.loop_closures_rejected}}},
+        {"optimise_s", Round(result.optimise_s, 1e-4)},
+        {"per_stop_s", {{"mean", Round(mean, 1e-5)}, {"max", Round(most, 1e-5)}}},
+        {"rebuilds", result.rebuilds},
+        {"rebuild_s", Round(result.rebuild_s, 1e-4)}};
+  } else if (request.options.localize == LocalizeKind::kScan) {
+    run["localization"] = {
+        {"method", "scan"},
         {"frames_matched", result.matches},
         {"frames_corrected", result.corrections},
         {"stops_scan_matched", result.scan_matches},
@@ -80,7 +103,9 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   if (result.final_true_pose) run["final_true_pose"] = pose_json(*result.final_true_pose);
   if (result.pose_error) {
     const eval::PoseError& e = *result.pose_error;
-    run["pose_error"] = {{"final_m", Round(e.final_m, 1e-4)},
+    run["pose_error"] = {{"ate_rms_m", Round(e.ate_rms_m, 1e-4)},
+                         {"heading_rms_deg", Round(e.heading_rms_deg, 0.01)},
+                         {"final_m", Round(e.final_m, 1e-4)},
                          {"final_deg", Round(e.final_deg, 0.01)},
                          {"mean_m", Round(e.mean_m, 1e-4)},
                          {"mean_deg", Round(e.mean_deg, 0.01)},
@@ -103,6 +128,8 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
   io::WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
                      io::ColourMapPathFor((out / "map.yaml").string()));
   io::WritePng((out / "map.png").string(), draw::DrawMapPicture(seen, result.path, result.stops));
+  if (result.graph)
+    io::WriteFileAtomically((out / "graph.g2o").string(), io::G2oText(*result.graph));
   return map;
 }
 
@@ -139,6 +166,7 @@ std::unique_ptr<robot::RemoteRobot> ConnectRobot(const ExploreRequest& request,
 
 // Explores through a connected robot.
 ExplorationResult ExploreRemote(robot::RemoteRobot& robot, const ExploreRequest& request,
+                                const ExplorationOptions& options,
                                 const RobotDescription& robot_info,
                                 const ExplorationObserver& observer) {
   std::unique_ptr<vision::FloorSegmenter> segmenter = vision::MakeFloorSegmenter(
@@ -146,8 +174,8 @@ ExplorationResult ExploreRemote(robot::RemoteRobot& robot, const ExploreRequest&
                                                            : vision::SegmentationMethod::kDefault,
       robot_info.camera);
   return ExploreWithRobot(
-      robot, robot_info, request.options,
-      [&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, observer);
+      robot, robot_info, options, [&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); },
+      observer);
 }
 
 // The request's own checks (the options are checked with their noise).
@@ -178,8 +206,10 @@ void CreateOutDir(const std::string& out_dir) {
 // worth more than the log; error() says why it stopped.
 class Recorder {
  public:
-  Recorder(const ExploreRequest& request, const RobotDescription& robot_info) {
+  Recorder(const ExploreRequest& request, const RobotDescription& robot_info,
+           const localize::OdometryModel& odometry) {
     io::RunLogInfo info;
+    info.odometry_model = {odometry.translation_fraction, odometry.rotation_fraction};
     info.radius_m = robot_info.radius_m;
     info.cell_m = request.options.cell_m > 0.0 ? request.options.cell_m
                                                : mapping::DefaultCellSize(robot_info.radius_m);
@@ -242,6 +272,11 @@ ExploreReport RunExplore(const ExploreRequest& request) {
                                                      request.odometry_noise, request.odometry_bias);
   }
   CheckExplorationOptions(options);
+  // In the simulator the graph's odometry model is the world's noise (Explore sets it too).
+  if (world) {
+    options.graph.odometry =
+        OdometryModelOf(options.odometry_noise.value_or(world->robot().odometry_noise));
+  }
   const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
   std::unique_ptr<robot::RemoteRobot> remote;
   if (!request.robot_url.empty()) remote = ConnectRobot(request, robot_info);
@@ -264,11 +299,12 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     };
   }
   std::optional<Recorder> recorder;
-  if (!request.record_dir.empty()) recorder.emplace(request, robot_info).Watch(observer);
+  if (!request.record_dir.empty())
+    recorder.emplace(request, robot_info, options.graph.odometry).Watch(observer);
 
   ExploreReport report{request.robot_url.empty()
                            ? Explore(*world, options, observer)
-                           : ExploreRemote(*remote, request, robot_info, observer),
+                           : ExploreRemote(*remote, request, options, robot_info, observer),
                        {},
                        {}};
   if (recorder) {

@@ -50,6 +50,9 @@ class Explorer {
                         options.occupancy,
                         options.localize == LocalizeKind::kScan
                             ? std::optional<localize::TrackerOptions>(options.tracker)
+                            : std::nullopt,
+                        options.localize == LocalizeKind::kGraph
+                            ? std::optional<localize::GraphTrackerOptions>(options.graph)
                             : std::nullopt},
             std::move(mask), robot.Odometry()),
         look_(mapper_.look_ahead()),
@@ -77,6 +80,24 @@ class Explorer {
     } catch (const robot::RobotError&) {
       // A robot that stopped answering has no final pose to give.
     }
+    mapper_.Finish();
+    if (const auto& graph = mapper_.graph()) {
+      // The path and the stops where the graph now puts them.
+      result_.path.clear();
+      for (const core::Pose2& p : graph->graph().poses()) result_.path.push_back(p);
+      for (std::size_t i = 0; i < result_.stops.size(); ++i) {
+        result_.stops[i] = mapper_.FramePoses().at(pirouette_frames_[i]);
+      }
+      result_.graph = graph->graph();
+      result_.loop_closures_accepted = graph->loop_closures_accepted();
+      result_.loop_closures_rejected = graph->loop_closures_rejected();
+      result_.scan_matches = graph->scan_matches();
+      result_.optimise_s = graph->optimise_s();
+      result_.per_stop_s = graph->per_stop_s();
+      result_.rebuild_s = mapper_.rebuild_s();
+      result_.rebuilds = mapper_.rebuilds();
+    }
+    result_.final_frame_poses = mapper_.FramePoses();
     result_.wall_time_s = run::Seconds(Clock::now() - start_);
     result_.times.perceive_s = mapper_.perceive_s();
     result_.times.update_s = mapper_.update_s();
@@ -266,6 +287,7 @@ class Explorer {
 
   void Pirouette() {
     const int turns = core::kPirouetteTurns;
+    const auto first_frame = static_cast<std::size_t>(result_.frames);
     for (int i = 0; i < turns; ++i) {
       if (Interrupted()) return;  // a real robot's pirouette takes a while
       Look();
@@ -273,6 +295,7 @@ class Explorer {
     }
     ++result_.pirouettes;
     result_.stops.push_back(Pose());
+    pirouette_frames_.push_back(first_frame);
     last_pirouette_ = Pose().translation();
     Report();
   }
@@ -539,7 +562,8 @@ class Explorer {
   core::Pose2 start_pose_;
   std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing
   int step_aways_ = 0;
-  bool looked_since_drive_ = false;  // a frame was taken where the robot stands
+  bool looked_since_drive_ = false;            // a frame was taken where the robot stands
+  std::vector<std::size_t> pirouette_frames_;  // each pirouette's first frame
   Clock::time_point start_;
 };
 

@@ -48,8 +48,12 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
       extractor_(ipm_, setup.max_range_m),
       look_(explore::LookAheadOptions{setup.radius_m, camera::NearRange(ipm_), setup.max_range_m,
                                       setup.cell_m}),
+      start_(start),
       grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {
-  if (setup.tracking) {
+  if (setup.graph) {
+    graph_.emplace(*setup.graph);
+    view_extractor_.emplace(ipm_, setup.max_range_m * setup.graph->stop.view_range_factor);
+  } else if (setup.tracking) {
     tracker_.emplace(*setup.tracking);
     view_extractor_.emplace(ipm_, setup.max_range_m * setup.tracking->view_range_factor);
   }
@@ -63,6 +67,10 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
     seen.mask = mask_(seen.bgr);
     seen.profile = extractor_.Extract(seen.mask);
     colour_frames_.push_back({frame.odometry, ColouredHits(seen.bgr, seen.mask, seen.profile)});
+  }
+  if (graph_) {
+    AddFrameToGraph(seen, frame);
+    return seen;
   }
   if (!tracker_) {
     seen.pose = frame.odometry;
@@ -94,6 +102,101 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
   return seen;
 }
 
+void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
+  int moved = -1;
+  const bool starts = graph_->StartsStop(frame.odometry);
+  {
+    run::StageTimer timer(localize_s_);
+    moved = graph_->Track(grid_, view_extractor_->Extract(seen.mask), setup_.max_range_m,
+                          frame.odometry);
+  }
+  const std::size_t k = frame_profiles_.size();
+  frame_profiles_.push_back(seen.profile);
+  frame_odometry_.push_back(frame.odometry);
+  // Bumps made on the way here go with this frame (and its stop).
+  std::size_t first_new = events_.size();
+  for (std::size_t i = 0; i < events_.size(); ++i) {
+    MapEvent& e = events_[i];
+    if (e.kind == MapEvent::Kind::kContact && !e.resolved) {
+      e.frame = k;
+      e.frame_T_bump = frame.odometry.Inverse() * e.frame_T_bump;
+      e.resolved = true;
+      first_new = std::min(first_new, i);
+    }
+  }
+  if (starts) {
+    // The map before the stop (made again in Rebuild when stops moved).
+    stop_first_event_ = first_new;
+    if (moved < 0) before_stop_ = grid_;
+  }
+  events_.emplace_back(MapEvent::Kind::kFrame, k);
+  seen.pose = graph_->FramePose(k);
+  colour_frames_.back().pose = seen.pose;
+  if (moved < 0) {
+    for (std::size_t i = first_new; i < events_.size(); ++i) Apply(events_[i]);
+  } else {
+    Rebuild(moved == graph_->StopOf(k) && !starts);
+  }
+}
+
+void FrameMapper::Apply(const MapEvent& event) {
+  switch (event.kind) {
+    case MapEvent::Kind::kFrame:
+      Insert(frame_profiles_[event.frame], graph_->FramePose(event.frame));
+      break;
+    case MapEvent::Kind::kConfirm:
+      Confirm(frame_profiles_[event.frame], graph_->FramePose(event.frame), event.leg_m);
+      break;
+    case MapEvent::Kind::kContact: {
+      run::StageTimer timer(update_s_);
+      InsertBump(
+          grid_,
+          event.resolved ? graph_->FramePose(event.frame) * event.frame_T_bump : event.map_T_bump,
+          setup_.radius_m, setup_.cell_m);
+      break;
+    }
+  }
+}
+
+void FrameMapper::Replay(std::size_t from) {
+  for (std::size_t i = from; i < events_.size(); ++i) {
+    if (i == stop_first_event_) before_stop_ = grid_;
+    Apply(events_[i]);
+  }
+}
+
+void FrameMapper::Rebuild(bool from_stop_start) {
+  run::StageTimer timer(rebuild_s_);
+  ++rebuilds_;
+  if (from_stop_start && before_stop_) {
+    grid_ = *before_stop_;
+    Replay(stop_first_event_);
+  } else {
+    grid_ = InitialGrid(start_, setup_.cell_m, setup_.occupancy);
+    Replay(0);
+  }
+  for (std::size_t i = 0; i < colour_frames_.size(); ++i) {
+    colour_frames_[i].pose = graph_->FramePose(i);
+  }
+}
+
+void FrameMapper::Finish() {
+  if (!graph_) return;
+  int moved = -1;
+  {
+    run::StageTimer timer(localize_s_);
+    moved = graph_->Finish();
+  }
+  if (moved >= 0) Rebuild(false);
+}
+
+std::vector<core::Pose2> FrameMapper::FramePoses() const {
+  std::vector<core::Pose2> poses;
+  poses.reserve(colour_frames_.size());
+  for (const ColourFrame& f : colour_frames_) poses.push_back(f.pose);
+  return poses;
+}
+
 std::vector<localize::ColourSighting> FrameMapper::ColourSightings() const {
   std::vector<localize::ColourSighting> out;
   for (const ColourFrame& f : colour_frames_) {
@@ -110,23 +213,52 @@ void FrameMapper::Insert(const core::ObstacleProfile& profile, const core::Pose2
   mapping::MarkFootprintFree(grid_, map_T_robot.translation(), setup_.radius_m);
 }
 
-void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
-  run::StageTimer timer(update_s_);
+void FrameMapper::InsertBump(mapping::OccupancyGrid& grid, const core::Pose2& map_T_robot,
+                             double radius_m, double cell_m) {
   core::ObstacleProfile bump;
-  bump.max_range_m = setup_.radius_m + setup_.cell_m;
-  bump.readings.push_back({0.0, setup_.radius_m + 0.5 * setup_.cell_m, core::ReadingKind::kHit});
+  bump.max_range_m = radius_m + cell_m;
+  bump.readings.push_back({0.0, radius_m + 0.5 * cell_m, core::ReadingKind::kHit});
+  mapping::InsertProfile(grid, bump, map_T_robot);
+}
+
+void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
   const core::Pose2 map_T_robot = ToMap(odom_T_robot);
-  mapping::InsertProfile(grid_, bump, map_T_robot);
+  if (graph_) {
+    // The bump goes with the stop it was made at: the stop of the frame
+    // before where the robot has not moved since, else the next frame's.
+    MapEvent bump(MapEvent::Kind::kContact);
+    bump.map_T_bump = map_T_robot;
+    if (!frame_odometry_.empty() && !graph_->StartsStop(odom_T_robot)) {
+      bump.frame = frame_odometry_.size() - 1;
+      bump.frame_T_bump = frame_odometry_.back().Inverse() * odom_T_robot;
+      events_.push_back(bump);
+      Apply(events_.back());
+    } else {
+      // Put in with the next frame (the explorer looks at once).
+      bump.resolved = false;
+      bump.frame_T_bump = odom_T_robot;  // its odometry, until its frame is known
+      events_.push_back(bump);
+    }
+    return;
+  }
+  run::StageTimer timer(update_s_);
+  InsertBump(grid_, map_T_robot, setup_.radius_m, setup_.cell_m);
   // With tracking, the stop's frames are put again in the map as it was
   // before the stop: the bump must be there too (a move that stopped at
   // contact at once leaves the robot in the same stop).
-  if (before_stop_) mapping::InsertProfile(*before_stop_, bump, map_T_robot);
+  if (before_stop_) InsertBump(*before_stop_, map_T_robot, setup_.radius_m, setup_.cell_m);
 }
 
 void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
                                   const core::Pose2& map_T_robot, double leg_m) {
   // With tracking, the stop's last frame's confirmation is put in again with it.
   if (tracker_ && !stop_events_.empty()) stop_events_.back().blocked_leg_m = leg_m;
+  if (graph_ && !frame_profiles_.empty()) {
+    MapEvent confirm(MapEvent::Kind::kConfirm);
+    confirm.frame = frame_profiles_.size() - 1;
+    confirm.leg_m = leg_m;
+    events_.push_back(confirm);
+  }
   Confirm(profile, map_T_robot, leg_m);
 }
 

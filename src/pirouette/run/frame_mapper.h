@@ -12,6 +12,7 @@
 #include "pirouette/core/pose2.h"
 #include "pirouette/explore/look_ahead.h"
 #include "pirouette/localize/colour_map.h"
+#include "pirouette/localize/graph_tracker.h"
 #include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/robot/robot.h"
@@ -29,6 +30,8 @@ struct MapperSetup {
   // Pose tracking (localize::PoseTracker, frame by frame); none: the map is
   // made at the odometry's poses.
   std::optional<localize::TrackerOptions> tracking;
+  // Graph SLAM over the stops (localize::GraphTracker), instead of `tracking`.
+  std::optional<localize::GraphTrackerOptions> graph;
 };
 
 // The floor mask (255 floor) of a raw BGR frame, from a segmenter that sees
@@ -49,6 +52,12 @@ using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
 // stop's frames, which the tracker may move, are put again in the map as it
 // was before the stop: the map's frame is the odometry's at the start, and
 // ToMap turns any later odometry pose into it.
+// With the graph (setup.graph), every frame, bump and confirmation is kept
+// with its stop, and whenever the graph's optimisation moves stops the map is
+// made again from all of them at their stops' new poses (from the current
+// stop's first frame when only the current stop moved), so a hit moves with
+// its stop and nothing is frozen (Grisetti et al. 2010: the map is a function
+// of the poses).
 class FrameMapper {
  public:
   // The grid starts as 2 m square around `start` (odometry frame) and grows.
@@ -66,10 +75,24 @@ class FrameMapper {
 
   // The map pose of an odometry pose (the same without tracking).
   core::Pose2 ToMap(const core::Pose2& odom_T_robot) const {
+    if (graph_) return graph_->ToMap(odom_T_robot);
     return tracker_ ? tracker_->ToMap(odom_T_robot) : odom_T_robot;
   }
   // The tracker; none without tracking.
   const std::optional<localize::PoseTracker>& tracker() const { return tracker_; }
+  // The graph; none without it.
+  const std::optional<localize::GraphTracker>& graph() const { return graph_; }
+
+  // Ends the run's mapping: with the graph, its last stop is matched and the
+  // map made again if stops moved. Nothing without the graph.
+  void Finish();
+  // Where every frame is now in the map (the odometry's without tracking;
+  // the tracker's or the graph's latest).
+  std::vector<core::Pose2> FramePoses() const;
+  // Seconds spent making the map again after the graph moved stops, and how
+  // many times.
+  double rebuild_s() const { return rebuild_s_; }
+  int rebuilds() const { return rebuilds_; }
 
   // A straight move stopped at contact with the robot at odom_T_robot.
   void AddContact(const core::Pose2& odom_T_robot);
@@ -109,6 +132,35 @@ class FrameMapper {
   // Puts a frame (or a confirmation) in grid_ at its map pose.
   void Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot);
   void Confirm(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot, double leg_m);
+
+  // With the graph: what went into the map, in order, to make it again.
+  struct MapEvent {
+    enum class Kind { kFrame, kConfirm, kContact };
+    explicit MapEvent(Kind k, std::size_t f = 0) : kind(k), frame(f) {}
+    Kind kind;
+    std::size_t frame = 0;     // the frame (kFrame, kConfirm) or the one a bump goes with
+    double leg_m = 0.0;        // kConfirm
+    core::Pose2 frame_T_bump;  // kContact: the bump's pose in its frame's
+    bool resolved = true;      // kContact: false until its frame is known
+    core::Pose2 map_T_bump;    // kContact: where it went when unresolved
+  };
+  void AddFrameToGraph(Seen& seen, const robot::Frame& frame);
+  // Puts the map's events in again from events_[from] on, on grid_ as it is.
+  void Replay(std::size_t from);
+  // Makes the map again, all of it (from_stop_start: from the current stop's
+  // first frame on, on the map before it).
+  void Rebuild(bool from_stop_start);
+  void Apply(const MapEvent& event);
+  static void InsertBump(mapping::OccupancyGrid& grid, const core::Pose2& map_T_robot,
+                         double radius_m, double cell_m);
+  std::optional<localize::GraphTracker> graph_;
+  std::vector<MapEvent> events_;
+  std::vector<core::ObstacleProfile> frame_profiles_;  // each frame's, at the map's range
+  std::vector<core::Pose2> frame_odometry_;
+  std::size_t stop_first_event_ = 0;
+  core::Pose2 start_;
+  double rebuild_s_ = 0.0;
+  int rebuilds_ = 0;
 
   mapping::OccupancyGrid grid_;
   std::optional<localize::PoseTracker> tracker_;

@@ -59,7 +59,7 @@ void CheckBounds(double value, double lo, double hi, double asked, const char* o
 // request's, else the log's, else the explorer's defaults.
 MapperSetup SetupOf(const MapLogRequest& request, const io::RunLog& log,
                     const std::string& log_yaml) {
-  MapperSetup setup{log.camera, 0.0, 0.0, 0.0, kExplorationOccupancy, std::nullopt};
+  MapperSetup setup{log.camera, 0.0, 0.0, 0.0, kExplorationOccupancy, std::nullopt, std::nullopt};
   setup.radius_m = request.radius_m > 0.0 ? request.radius_m : log.info.radius_m;
   if (!(setup.radius_m > 0.0)) {
     throw core::InputError(log_yaml, 0, "robot.radius",
@@ -90,7 +90,7 @@ LocalizeKind LocalizeOf(const MapLogRequest& request, const io::RunLog& log,
   if (!localize) {
     throw core::InputError(request.localize.empty() ? log_yaml : "--localize", 0,
                            request.localize.empty() ? "map.localize" : "",
-                           "'" + name + "' is not a way to localize (scan | none)");
+                           "'" + name + "' is not a way to localize (graph | scan | none)");
   }
   return *localize;
 }
@@ -126,6 +126,15 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
       return fmt::format("map: frame {} of {}, {:.1f} s", result.frames, log.rows.size(), elapsed);
     });
   }
+  mapper.Finish();
+  if (const auto& graph = mapper.graph()) {
+    result.path = graph->graph().poses();
+    result.graph = graph->graph();
+    result.loop_closures_accepted = graph->loop_closures_accepted();
+    result.loop_closures_rejected = graph->loop_closures_rejected();
+    result.scan_matches = graph->scan_matches();
+  }
+  result.final_frame_poses = mapper.FramePoses();
   result.status = "complete";
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   result.times.perceive_s = mapper.perceive_s();
@@ -151,8 +160,15 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   const std::string method_name = request.method.empty() ? log.info.method : request.method;
   const vision::SegmentationMethod method =
       MethodOf(method_name, request.method.empty() ? log_yaml : "--method");
-  if (LocalizeOf(request, log, log_yaml) == LocalizeKind::kScan) {
-    setup.tracking = ExplorationOptions{}.tracker;
+  const LocalizeKind localize = LocalizeOf(request, log, log_yaml);
+  if (localize == LocalizeKind::kScan) setup.tracking = ExplorationOptions{}.tracker;
+  if (localize == LocalizeKind::kGraph) {
+    // The graph as the run kept it: its odometry model from the log.
+    setup.graph = ExplorationOptions{}.graph;
+    if (log.info.odometry_model) {
+      setup.graph->odometry.translation_fraction = (*log.info.odometry_model)[0];
+      setup.graph->odometry.rotation_fraction = (*log.info.odometry_model)[1];
+    }
   }
 
   // The world for the evaluation: the one asked for, else the log's when it

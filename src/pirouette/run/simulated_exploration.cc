@@ -15,6 +15,10 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
                           const ExplorationObserver& observer) {
   CheckExplorationOptions(options);
   const camera::CameraModel& camera = world.robot().camera;
+  // The graph's odometry model: the simulator's own noise.
+  ExplorationOptions explore_options = options;
+  explore_options.graph.odometry =
+      OdometryModelOf(options.odometry_noise.value_or(world.robot().odometry_noise));
   sim::SimulatedRobot simulated(world, options.seed, options.odometry_noise);
   sim::SimRobot& robot = simulated.robot();
   eval::FloorMasker masker(options.method, world, camera);
@@ -27,10 +31,10 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
     if (observer.on_capture) observer.on_capture(frame, motions);
   };
   ExplorationResult result = ExploreWithRobot(
-      robot, RobotDescription{camera, world.robot().radius}, options,
+      robot, RobotDescription{camera, world.robot().radius}, explore_options,
       [&](const cv::Mat3b& bgr) { return masker.Mask(bgr, robot.TruePose()); }, watching);
   result.final_true_pose = robot.TruePose();
-  result.pose_error = eval::PoseErrorOf(result.frame_poses, truth);
+  result.pose_error = eval::PoseErrorOf(result.final_frame_poses, truth);
   if (result.pose_error && result.final_pose) {
     eval::SetFinalError(*result.pose_error, *result.final_pose, robot.TruePose());
   }
