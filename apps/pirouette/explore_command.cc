@@ -32,6 +32,7 @@ struct ExploreChoices {
   std::string localize = "none";
   std::vector<double> odometry_noise;  // {} or {translation, rotation}
   std::vector<double> odometry_bias;   // {} or {translation, rotation}
+  Ros2Choices ros2;
 };
 
 // The world, where the outputs go, the seed and the step limit.
@@ -56,7 +57,8 @@ void AddExplorationOptions(CLI::App* cmd, run::ExploreRequest& request, ExploreC
 }
 
 // A real robot instead of the simulated one, and what else is written.
-void AddRobotAndOutputOptions(CLI::App* cmd, run::ExploreRequest& request) {
+void AddRobotAndOutputOptions(CLI::App* cmd, run::ExploreRequest& request,
+                              ExploreChoices& choices) {
   cmd->add_flag("--video", request.video, "also write OUT/explore.mp4");
   cmd->add_option("--robot", request.robot_url,
                   "explore with a robot that speaks the line protocol at tcp://HOST:PORT "
@@ -71,6 +73,7 @@ void AddRobotAndOutputOptions(CLI::App* cmd, run::ExploreRequest& request) {
   cmd->add_option("--record", request.record_dir,
                   "also write a run log (pirouette-log/1: camera.yaml, frames/, frames.csv) in "
                   "this new folder; `pirouette map --log DIR` maps it again");
+  AddRos2PublishOptions(cmd, choices.ros2);
   AddQuietOption(cmd, request.quiet);
 }
 
@@ -86,6 +89,7 @@ void Explore(run::ExploreRequest& request, const ExploreChoices& choices) {
   }
   request.options.planner = *run::ParsePlannerKind(choices.planner);
   request.options.method = *vision::ParseMaskSource(choices.method);
+  request.ros2_publish = Ros2PublishOf(choices.ros2);
   request.options.stop_requested = StopOnInterrupt();
   const run::ExploreReport report = run::RunExplore(request);
   const std::string& status = report.result.status;
@@ -111,7 +115,7 @@ Command AddExploreCommand(CLI::App& parent) {
   CLI::App* cmd = parent.add_subcommand("explore", kExploreHelp);
   AddRunOptions(cmd, *request);
   AddExplorationOptions(cmd, *request, *choices);
-  AddRobotAndOutputOptions(cmd, *request);
+  AddRobotAndOutputOptions(cmd, *request, *choices);
   return {cmd, [request, choices] { Explore(*request, *choices); }};
 }
 

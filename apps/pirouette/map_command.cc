@@ -9,6 +9,7 @@ namespace pirouette::cli {
 
 Command AddMapCommand(CLI::App& parent) {
   auto request = std::make_shared<run::MapLogRequest>();
+  auto ros2 = std::make_shared<Ros2Choices>();
   CLI::App* cmd = parent.add_subcommand(
       "map",
       "Build the map of a recorded run (a pirouette-log/1 folder, as `explore --record DIR` "
@@ -30,8 +31,10 @@ Command AddMapCommand(CLI::App& parent) {
   AddMaxRangeOption(cmd, request->max_range_m, "the log's, else the paper's rule");
   AddMethodOption(cmd, request->method, kSegmentationMethods, "the log's");
   AddLocalizeOption(cmd, request->localize, "the log's, else none");
+  AddRos2PublishOptions(cmd, *ros2);
   AddQuietOption(cmd, request->quiet);
-  return {cmd, [request] {
+  return {cmd, [request, ros2] {
+            request->ros2_publish = Ros2PublishOf(*ros2);
             const run::MapLogReport report = run::RunMapLog(*request);
             if (!request->quiet) {
               std::fprintf(stderr, "map: %d frames in %.1f s; map in %s/map.yaml\n",

@@ -1,6 +1,10 @@
 #include "apps/pirouette/options.h"
 
 #include <map>
+#include <stdexcept>
+
+#include "pirouette/core/input_error.h"
+#include "pirouette/robot/ros2/dds_participant.h"
 
 namespace pirouette::cli {
 namespace {
@@ -193,6 +197,52 @@ CLI::Option* AddRangeFactorOption(CLI::App* app, double& range_factor) {
 CLI::Option* AddPlaceTableOption(CLI::App* app, std::string& path, std::string_view role) {
   return app->add_option("--table", path,
                          WithRole("place table file (pirouette-places/1 YAML)", role));
+}
+
+}  // namespace pirouette::cli
+
+namespace pirouette::cli {
+
+void AddRos2PublishOptions(CLI::App* app, Ros2Choices& choices) {
+  app->add_flag("--ros2-publish", choices.publish,
+                "publish the run to ROS 2 over DDS as it goes, in the domain ROS_DOMAIN_ID names "
+                "(default 0): map, tf (map->odom), pirouette/path, pirouette/plan, "
+                "pirouette/floor, pirouette/status, for RViz2 or `ros2 topic echo` "
+                "(docs/ros2.md). Only on the loopback interface unless --ros-network");
+  app->add_option("--ros-namespace", choices.ros_namespace,
+                  "the ROS 2 namespace of the topics, e.g. robot1 (default: none)");
+  app->add_option("--ros-network", choices.network,
+                  "let DDS leave this machine: an interface (eth0, wlan0 or its IPv4 address), "
+                  "or auto for Cyclone DDS's own choice and CYCLONEDDS_URI (default: loopback "
+                  "only, 127.0.0.1, no multicast)");
+}
+
+std::optional<run::Ros2PublishOptions> Ros2PublishOf(const Ros2Choices& choices) {
+  if (!choices.publish) {
+    if (!choices.ros_namespace.empty() || !choices.network.empty()) {
+      throw core::InputError("--ros-namespace", 0, "", "needs --ros2-publish");
+    }
+    return std::nullopt;
+  }
+  run::Ros2PublishOptions options;
+  try {
+    options.domain_id = robot::ros2::RosDomainIdFromEnvironment();
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError("ROS_DOMAIN_ID", 0, "", e.what());
+  }
+  try {
+    robot::ros2::RosTopicName(choices.ros_namespace, "map");
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError("--ros-namespace", 0, "", e.what());
+  }
+  options.ros_namespace = choices.ros_namespace;
+  options.network.interface = choices.network;
+  try {
+    robot::ros2::CycloneConfigFor(options.network);
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError("--ros-network", 0, "", e.what());
+  }
+  return options;
 }
 
 }  // namespace pirouette::cli

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "pirouette/run/ros2_run_publisher.h"
+
 namespace pirouette::cli {
 
 // The options several subcommands share, each declared here once: its name,
@@ -89,5 +91,19 @@ CLI::Option* AddRangeFactorOption(CLI::App* app, double& range_factor);
 
 // --table: a place table file; `role` says when it is loaded or written.
 CLI::Option* AddPlaceTableOption(CLI::App* app, std::string& path, std::string_view role);
+
+// --ros2-publish, --ros-namespace and --ros-network: publish the run to ROS 2
+// over DDS (docs/ros2.md).
+struct Ros2Choices {
+  bool publish = false;
+  std::string ros_namespace;
+  std::string network;
+};
+void AddRos2PublishOptions(CLI::App* app, Ros2Choices& choices);
+
+// The publishing the choices ask for (none without --ros2-publish), in the
+// domain ROS_DOMAIN_ID names. Throws core::InputError naming ROS_DOMAIN_ID,
+// --ros-namespace or --ros-network for a value ROS 2 or Cyclone would refuse.
+std::optional<run::Ros2PublishOptions> Ros2PublishOf(const Ros2Choices& choices);
 
 }  // namespace pirouette::cli

@@ -92,6 +92,21 @@ struct ExplorationProgress {
   double elapsed_s = 0.0;
 };
 
+// The run as it stands after every pirouette, move and plan, for live views
+// (ROS 2, the browser). The references hold during the call only.
+struct RunSnapshot {
+  const mapping::OccupancyGrid& grid;        // the map, in the map frame
+  const std::vector<core::Pose2>& path;      // where the robot went (map frame)
+  const std::vector<core::Pose2>& stops;     // where it pirouetted
+  const std::vector<Eigen::Vector2d>& plan;  // where it goes next; empty: no plan
+  core::Pose2 map_T_robot;
+  core::Pose2 map_T_odom;       // the correction the tracker or the graph makes
+  const cv::Mat3b& bgr;         // the last frame (empty before the first)
+  const cv::Mat1b& floor_mask;  // its floor, 255
+  int frames = 0;               // frames mapped: the map changed when this did
+  ExplorationProgress progress;
+};
+
 struct ExplorationObserver {
   std::function<void(const ExplorationProgress&)> on_progress;
   std::function<void(const FrameEvent&)> on_frame;
@@ -102,6 +117,7 @@ struct ExplorationObserver {
   // The frame just captured showed a forward move of leg_m blocked (the
   // mapper confirmed the blocking hits).
   std::function<void(double leg_m)> on_blocked;
+  std::function<void(const RunSnapshot&)> on_snapshot;
 };
 
 // What the explorer must know of its robot.

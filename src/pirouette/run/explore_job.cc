@@ -118,11 +118,14 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   return run;
 }
 
-mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result) {
-  // The map written is the part the robot saw, with a margin.
+mapping::OccupancyGrid SeenPart(const mapping::OccupancyGrid& grid) {
   constexpr int kMapMarginCells = 5;
+  return grid.CroppedToKnown(kMapMarginCells);
+}
+
+mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result) {
   const std::filesystem::path out(out_dir);
-  const mapping::OccupancyGrid seen = result.grid.CroppedToKnown(kMapMarginCells);
+  const mapping::OccupancyGrid seen = SeenPart(result.grid);
   mapping::TrinaryMap map = seen.ToTrinary();
   io::WriteRosMap(map, (out / "map.yaml").string());
   io::WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
@@ -280,6 +283,8 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
   std::unique_ptr<robot::RemoteRobot> remote;
   if (!request.robot_url.empty()) remote = ConnectRobot(request, robot_info);
+  std::optional<Ros2RunPublisher> ros2;
+  if (request.ros2_publish) ros2.emplace(*request.ros2_publish);
   CreateOutDir(request.out_dir);
   const std::filesystem::path out(request.out_dir);
   std::optional<draw::ExplorationVideo> video;
@@ -298,6 +303,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
       video->AddFrame(event.bgr, event.floor_mask, event.odom_T_robot, event.grid);
     };
   }
+  if (ros2) ros2->Watch(observer);
   std::optional<Recorder> recorder;
   if (!request.record_dir.empty())
     recorder.emplace(request, robot_info, options.graph.odometry).Watch(observer);
@@ -322,6 +328,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   }
   io::WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
+  if (ros2) ros2->PublishFinal(map, report.result);
   return report;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "pirouette/run/explorer.h"
+#include "pirouette/run/ros2_run_publisher.h"
 
 namespace pirouette::run {
 
@@ -31,6 +32,8 @@ struct ExploreRequest {
   // as fractions of each move (core::OdometryNoise).
   std::optional<std::array<double, 2>> odometry_noise;
   std::optional<std::array<double, 2>> odometry_bias;
+  // Set: publish the run to ROS 2 over DDS as it goes (Ros2RunPublisher).
+  std::optional<Ros2PublishOptions> ros2_publish;
 };
 
 // What it made.
@@ -47,6 +50,10 @@ struct ExploreReport {
 // an interrupted or stuck run keeps its map. Progress goes to standard error unless `quiet`. Throws
 // core::InputError for a bad world or option.
 ExploreReport RunExplore(const ExploreRequest& request);
+
+// The part of a grid a run writes and publishes: the cells the robot saw,
+// with a margin of 5 cells.
+mapping::OccupancyGrid SeenPart(const mapping::OccupancyGrid& grid);
 
 // Writes OUT/map.yaml, OUT/map.pgm (the part of the result's grid the robot
 // saw, with a margin), OUT/map.png (with its path and stops) and

@@ -168,10 +168,13 @@ class Explorer {
         plan = planner_->Next(PlanningMap(), Pose());
       }
       if (!plan) {
+        plan_.clear();
         if (!StepAwayToSeeNearby()) result_.status = "complete";
         continue;
       }
       StopWhereTheGoalIsInView(*plan);
+      plan_ = plan->waypoints_world;
+      Snapshot();
       if (plan->waypoints_world.empty() && AtLastPirouette()) {
         // Already looked all round from here and the goal stays unknown:
         // it cannot be seen from here; the planner is not to offer it again.
@@ -532,15 +535,29 @@ class Explorer {
     }
   }
 
-  void Report() {
-    if (!observer_.on_progress) return;
+  ExplorationProgress Progress() const {
     ExplorationProgress progress;
     progress.moves = result_.moves;
     progress.pirouettes = result_.pirouettes;
     progress.known_area_m2 =
         static_cast<double>(mapper_.grid().KnownCellCount()) * cell_m_ * cell_m_;
     progress.elapsed_s = run::Seconds(Clock::now() - start_);
-    observer_.on_progress(progress);
+    return progress;
+  }
+
+  void Report() {
+    if (observer_.on_progress) observer_.on_progress(Progress());
+    Snapshot();
+  }
+
+  // The run as it stands, to the live views.
+  void Snapshot() {
+    if (!observer_.on_snapshot) return;
+    const core::Pose2 odom_T_robot = robot_.Odometry();
+    const core::Pose2 map_T_robot = mapper_.ToMap(odom_T_robot);
+    observer_.on_snapshot(RunSnapshot{mapper_.grid(), result_.path, result_.stops, plan_,
+                                      map_T_robot, map_T_robot * odom_T_robot.Inverse(),
+                                      last_seen_.bgr, last_seen_.mask, result_.frames, Progress()});
   }
 
   // Step-aways a run makes at most (each a short trip and a pirouette).
@@ -557,6 +574,7 @@ class Explorer {
   const explore::LookAhead& look_;
   FrameMapper::Seen last_seen_;
   std::vector<core::MoveOutcome> motions_since_frame_;
+  std::vector<Eigen::Vector2d> plan_;  // the plan being followed, for the live views
   std::unique_ptr<explore::Planner> planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
   core::Pose2 start_pose_;

@@ -98,7 +98,7 @@ LocalizeKind LocalizeOf(const MapLogRequest& request, const io::RunLog& log,
 // Maps the log's frames in order, as the run did; the result's grid, path
 // (the frames' map poses, where they moved), frames and times.
 ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
-                         vision::SegmentationMethod method, bool quiet) {
+                         vision::SegmentationMethod method, bool quiet, Ros2RunPublisher* ros2) {
   const Clock::time_point start = Clock::now();
   std::unique_ptr<vision::FloorSegmenter> segmenter =
       vision::MakeFloorSegmenter(method, setup.camera);
@@ -122,6 +122,18 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
       result.path.push_back(seen.pose);
     }
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    if (ros2 != nullptr) {
+      static const std::vector<core::Pose2> kNoStops;
+      static const std::vector<Eigen::Vector2d> kNoPlan;
+      const mapping::OccupancyGrid& grid = mapper.grid();
+      ExplorationProgress at;
+      at.known_area_m2 = static_cast<double>(grid.KnownCellCount()) * grid.geometry().resolution() *
+                         grid.geometry().resolution();
+      at.elapsed_s = elapsed;
+      ros2->Publish(RunSnapshot{grid, result.path, kNoStops, kNoPlan, seen.pose,
+                                seen.pose * row.odometry.Inverse(), seen.bgr, seen.mask,
+                                result.frames, at});
+    }
     progress.Show(elapsed, [&] {
       return fmt::format("map: frame {} of {}, {:.1f} s", result.frames, log.rows.size(), elapsed);
     });
@@ -189,7 +201,9 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
                            "cannot create the output folder: " + error.message());
   }
 
-  MapLogReport report{Replay(log, setup, method, request.quiet), {}};
+  std::optional<Ros2RunPublisher> ros2;
+  if (request.ros2_publish) ros2.emplace(*request.ros2_publish);
+  MapLogReport report{Replay(log, setup, method, request.quiet, ros2 ? &*ros2 : nullptr), {}};
   const ExplorationResult& result = report.result;
   const mapping::TrinaryMap map = WriteMapOutputs(request.out_dir, result);
   nlohmann::json& run = report.run;
@@ -207,6 +221,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
                          {"update", Round(result.times.update_s, 1e-4)}};
   if (world) run["eval"] = eval::MapEvaluationToJson(eval::EvaluateMap(map, *world));
   io::WriteFileAtomically((fs::path(request.out_dir) / "run.json").string(), run.dump(2) + "\n");
+  if (ros2) ros2->PublishFinal(map, result);
   return report;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "pirouette/run/explorer.h"
+#include "pirouette/run/ros2_run_publisher.h"
 
 namespace pirouette::run {
 
@@ -19,6 +21,8 @@ struct MapLogRequest {
   std::string method;    // "default" | "paper"
   std::string localize;  // "scan" | "none"
   bool quiet = false;
+  // Set: publish the map to ROS 2 over DDS frame by frame (Ros2RunPublisher).
+  std::optional<Ros2PublishOptions> ros2_publish;
 };
 
 struct MapLogReport {
