@@ -9,7 +9,8 @@
 // the timeout) writes OUT_DIR/received.pgm (the last map, as map_server's
 // map_saver writes a trinary map: 0 occupied, 254 free, 205 unknown, the top
 // row first), OUT_DIR/received.txt ("RESOLUTION ORIGIN_X ORIGIN_Y MAPS",
-// then the last status's JSON on its own line) and exits 0; 1 when no map or
+// then the last status's JSON on its own line, then the maps' latency from
+// their stamp to their arrival) and exits 0; 1 when no map or
 // no final status came.
 #include <fastdds/rtps/transport/UDPv4TransportDescriptor.h>
 #include <fastrtps/utils/IPLocator.h>
@@ -21,6 +22,7 @@
 #include <fastdds/dds/subscriber/qos/DataReaderQos.hpp>
 #include <fastdds/dds/topic/TypeSupport.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -28,6 +30,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "ros2_msgsPubSubTypes.h"
 
@@ -100,6 +103,8 @@ int main(int argc, char** argv) {
   std::string status;
   int maps = 0;
   bool final_status = false;
+  std::vector<double> latencies_ms;
+  std::size_t bytes = 0;  // the maps' cells
   for (;;) {
     SampleInfo info;
     nav_msgs::msg::OccupancyGrid m;
@@ -108,6 +113,14 @@ int main(int argc, char** argv) {
       map = m;
       ++maps;
       last_map = Clock::now();
+      // The latency from the map's stamp (pirouette's system clock, the same
+      // machine) to its arrival here.
+      const double now_s =
+          std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch())
+              .count();
+      latencies_ms.push_back(
+          1e3 * (now_s - (m.header().stamp().sec() + 1e-9 * m.header().stamp().nanosec())));
+      bytes += m.data().size();
     }
     std_msgs::msg::String s;
     while (status_reader->take_next_sample(&s, &info) == ReturnCode_t::RETCODE_OK) {
@@ -142,5 +155,9 @@ int main(int argc, char** argv) {
   std::snprintf(line, sizeof line, "%.9g %.9g %.9g %d\n", map.info().resolution(),
                 map.info().origin().position().x(), map.info().origin().position().y(), maps);
   txt << line << status << "\n";
+  std::sort(latencies_ms.begin(), latencies_ms.end());
+  std::snprintf(line, sizeof line, "latency_ms median %.2f max %.2f; map cells received %zu\n",
+                latencies_ms[latencies_ms.size() / 2], latencies_ms.back(), bytes);
+  txt << line;
   return 0;
 }
