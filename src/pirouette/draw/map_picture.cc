@@ -46,7 +46,8 @@ int MapCanvas::Fixed(double pixels) {
 }
 
 cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<core::Pose2>& path,
-                         const std::vector<core::Pose2>& stops, int target_width_px) {
+                         const std::vector<core::Pose2>& stops, int target_width_px,
+                         const localize::PoseGraph* graph) {
   const core::GridGeometry& g = grid.geometry();
   MapCanvas canvas = MapCanvas::Of(
       g,
@@ -60,10 +61,23 @@ cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<c
   const int scale = canvas.scale;
   const auto pixel = [&](const Eigen::Vector2d& p) { return canvas.Pixel(p); };
   const int thickness = std::max(1, scale / 2);
+  // The graph's edges of one kind, `width` pixels wide.
+  const auto draw_edges = [&](localize::EdgeKind kind, const cv::Vec3b& colour, int width) {
+    if (graph == nullptr) return;
+    const std::vector<core::Pose2>& nodes = graph->poses();
+    for (const localize::PoseGraphEdge& edge : graph->edges()) {
+      if (edge.kind != kind) continue;
+      cv::line(image, pixel(nodes[edge.from].translation()), pixel(nodes[edge.to].translation()),
+               Scalar(colour), width, cv::LINE_AA, kShift);
+    }
+  };
+  draw_edges(localize::EdgeKind::kOdometry, kOdometryEdgeColour, thickness);
+  draw_edges(localize::EdgeKind::kScanMatch, kMatchEdgeColour, thickness);
   for (std::size_t i = 1; i < path.size(); ++i) {
     cv::line(image, pixel(path[i - 1].translation()), pixel(path[i].translation()), kPath,
              thickness, cv::LINE_AA, kShift);
   }
+  draw_edges(localize::EdgeKind::kLoopClosure, kLoopClosureColour, thickness + 1);
   const int dot = std::max(3, 2 * scale);
   for (const core::Pose2& stop : stops) {
     cv::circle(image, pixel(stop.translation()), MapCanvas::Fixed(dot), kStop, cv::FILLED,

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "pirouette/core/pose2.h"
+#include "pirouette/localize/pose_graph.h"
 #include "pirouette/mapping/occupancy_grid.h"
 
 namespace pirouette::draw {
@@ -36,9 +37,12 @@ struct MapCanvas {
 // grey levels by occupancy probability (white free, black occupied, the
 // unknown mid grey), the robot's path in blue, its stops (pirouettes) as
 // orange dots, the start in green and the final pose in red with its
-// heading; north up. `path` and `stops` are in the map's frame.
+// heading; north up. `path` and `stops` are in the map's frame. With a pose
+// graph (its nodes in the map's frame), its odometry and scan-match edges
+// are drawn faintly under the path and its loop closures clearly over it.
 // `target_width_px` sets the scale: whole pixels a cell, at least one.
 cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<core::Pose2>& path,
-                         const std::vector<core::Pose2>& stops, int target_width_px = 800);
+                         const std::vector<core::Pose2>& stops, int target_width_px = 800,
+                         const localize::PoseGraph* graph = nullptr);
 
 }  // namespace pirouette::draw

@@ -25,6 +25,11 @@ inline const cv::Vec3b kPathColour(200, 90, 20);   // blue
 inline const cv::Vec3b kStopColour(0, 140, 255);   // orange
 inline const cv::Vec3b kStartColour(40, 170, 40);  // green
 inline const cv::Vec3b kRobotColour(30, 30, 220);  // red
+// The pose graph over the stops: odometry and scan-match edges faint (pale
+// blue-grey and pale green), loop closures clear (deep purple).
+inline const cv::Vec3b kOdometryEdgeColour(215, 200, 185);
+inline const cv::Vec3b kMatchEdgeColour(175, 215, 175);
+inline const cv::Vec3b kLoopClosureColour(140, 20, 120);
 
 // Judged against the truth: the truth is the start's green; an answer found
 // right is the path's blue, found wrong the robot's red, "cannot tell" the

@@ -118,6 +118,9 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   return run;
 }
 
+// map.png's width, about (whole pixels a cell).
+constexpr int kMapPictureWidthPx = 800;
+
 mapping::OccupancyGrid SeenPart(const mapping::OccupancyGrid& grid) {
   constexpr int kMapMarginCells = 5;
   return grid.CroppedToKnown(kMapMarginCells);
@@ -130,7 +133,9 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
   io::WriteRosMap(map, (out / "map.yaml").string());
   io::WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
                      io::ColourMapPathFor((out / "map.yaml").string()));
-  io::WritePng((out / "map.png").string(), draw::DrawMapPicture(seen, result.path, result.stops));
+  io::WritePng((out / "map.png").string(),
+               draw::DrawMapPicture(seen, result.path, result.stops, kMapPictureWidthPx,
+                                    result.graph ? &*result.graph : nullptr));
   if (result.graph)
     io::WriteFileAtomically((out / "graph.g2o").string(), io::G2oText(*result.graph));
   return map;
