@@ -61,9 +61,12 @@ void AddRobotAndOutputOptions(CLI::App* cmd, run::ExploreRequest& request,
                               ExploreChoices& choices) {
   cmd->add_flag("--video", request.video, "also write OUT/explore.mp4");
   cmd->add_option("--robot", request.robot_url,
-                  "explore with a robot that speaks the line protocol at tcp://HOST:PORT "
-                  "(docs/robot-protocol.md; `pirouette sim-serve` serves the simulator so) "
-                  "instead of in the simulator");
+                  "explore with a real robot instead of in the simulator: tcp://HOST:PORT, one "
+                  "that speaks the line protocol (docs/robot-protocol.md), or ros2, a ROS 2 "
+                  "robot over DDS that publishes image_raw and odom and obeys cmd_vel, in the "
+                  "domain ROS_DOMAIN_ID names, under --ros-namespace (docs/ros2.md; the run is "
+                  "published as with --ros2-publish). `pirouette sim-serve [--ros2]` serves the "
+                  "simulator either way");
   AddCameraOption(cmd, request.camera_path, "the robot's camera (default: the world's)");
   AddRadiusOption(cmd, request.radius_m, "the world's robot");
   cmd->add_option("--robot-timeout", request.robot_timeout_s,
@@ -89,7 +92,9 @@ void Explore(run::ExploreRequest& request, const ExploreChoices& choices) {
   }
   request.options.planner = *run::ParsePlannerKind(choices.planner);
   request.options.method = *vision::ParseMaskSource(choices.method);
-  request.ros2_publish = Ros2PublishOf(choices.ros2);
+  Ros2Choices ros2 = choices.ros2;
+  if (request.robot_url == run::kRos2Robot) ros2.publish = true;  // its topics are NS's too
+  request.ros2_publish = Ros2PublishOf(ros2);
   request.options.stop_requested = StopOnInterrupt();
   const run::ExploreReport report = run::RunExplore(request);
   const std::string& status = report.result.status;

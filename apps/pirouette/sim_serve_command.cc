@@ -10,11 +10,14 @@
 #include "apps/pirouette/command.h"
 #include "apps/pirouette/interrupt.h"
 #include "apps/pirouette/options.h"
+#include "pirouette/core/input_error.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/world_file.h"
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
+#include "pirouette/robot/ros2/dds_participant.h"
 #include "pirouette/sim/simulated_robot.h"
+#include "pirouette/tools/ros2_sim_server.h"
 
 namespace pirouette::cli {
 namespace {
@@ -27,7 +30,32 @@ struct SimServeRequest {
   std::string port_file;
   std::vector<double> odometry_noise;  // {} or {translation, rotation}
   std::vector<double> odometry_bias;   // {} or {translation, rotation}
+  bool ros2 = false;                   // serve as a ROS 2 robot over DDS instead
+  Ros2Choices ros2_choices;
 };
+
+// The simulator as a ROS 2 robot over DDS (tools::Ros2SimServer).
+void ServeRos2(const SimServeRequest& request, const sim::World& world,
+               const core::OdometryNoise& noise) {
+  Ros2Choices choices = request.ros2_choices;
+  choices.publish = true;
+  const run::Ros2PublishOptions dds = *Ros2PublishOf(choices);
+  tools::Ros2SimServerOptions options;
+  options.domain_id = dds.domain_id;
+  options.network = dds.network;
+  options.ros_namespace = dds.ros_namespace;
+  options.stop_requested = StopOnInterrupt();
+  try {
+    tools::Ros2SimServer server(world, request.seed, noise, options);
+    std::fprintf(stderr, "sim-serve: a ROS 2 robot on %s (world %s, seed %llu); Ctrl-C stops\n",
+                 server.Describe().c_str(), request.world_path.c_str(),
+                 static_cast<unsigned long long>(request.seed));
+    server.Serve();
+  } catch (const robot::ros2::DdsError& e) {
+    throw std::runtime_error(std::string("sim-serve: DDS: ") + e.what());
+  }
+  std::fprintf(stderr, "sim-serve: stopped\n");
+}
 
 // The simulated robot exactly as the in-process explorer builds it
 // (sim::SimulatedRobot), so that a run through sim-serve sees the same frames
@@ -40,6 +68,10 @@ void Serve(const SimServeRequest& request) {
   const core::OdometryNoise noise = core::OdometryNoiseWith(
       world.robot().odometry_noise, pair(request.odometry_noise), pair(request.odometry_bias));
   core::CheckOdometryNoise(noise);
+  if (request.ros2) {
+    ServeRos2(request, world, noise);
+    return;
+  }
   sim::SimulatedRobot simulated(world, request.seed, noise);
   robot::Robot& robot = simulated.robot();
 
@@ -69,8 +101,10 @@ Command AddSimServeCommand(CLI::App& parent) {
       "sim-serve",
       "Serve the simulated robot of a world over TCP with pirouette's robot line protocol "
       "(docs/robot-protocol.md), one client at a time, until Ctrl-C: what `explore --robot "
-      "tcp://HOST:PORT` drives, and what a real robot's adapter imitates.\n"
-      "  example: pirouette sim-serve --world worlds/soccer_field.yaml --port 5555");
+      "tcp://HOST:PORT` drives, and what a real robot's adapter imitates; or with --ros2 as "
+      "a ROS 2 robot over DDS, for `explore --robot ros2` and ROS 2's own tools.\n"
+      "  example: pirouette sim-serve --world worlds/soccer_field.yaml --port 5555\n"
+      "  example: pirouette sim-serve --world worlds/soccer_field.yaml --ros2");
   AddWorldOption(cmd, request->world_path)->required();
   cmd->add_option("--port", request->port, "TCP port to listen on; 0: any free port")
       ->check(CLI::Range(0, 65535))
@@ -83,7 +117,21 @@ Command AddSimServeCommand(CLI::App& parent) {
   AddOdometryOptions(cmd, request->odometry_noise, request->odometry_bias);
   cmd->add_option("--port-file", request->port_file,
                   "once listening, write the port to this file (atomically), for scripts");
+  cmd->add_flag("--ros2", request->ros2,
+                "serve a ROS 2 robot over DDS instead, in the domain ROS_DOMAIN_ID names: obeys "
+                "cmd_vel in simulated time, publishes odom, tf (odom->base_link), clock, and "
+                "image_raw with camera_info while at rest; what `explore --robot ros2` drives "
+                "(docs/ros2.md). Loopback only unless --ros-network");
+  cmd->add_option("--ros-namespace", request->ros2_choices.ros_namespace,
+                  "with --ros2: the namespace of the topics, e.g. robot1 (default: none)");
+  cmd->add_option("--ros-network", request->ros2_choices.network,
+                  "with --ros2: let DDS leave this machine (an interface such as eth0 or its "
+                  "IPv4 address, or auto); default loopback only");
   return {cmd, [request] {
+            if (!request->ros2 && (!request->ros2_choices.ros_namespace.empty() ||
+                                   !request->ros2_choices.network.empty())) {
+              throw core::InputError("--ros-namespace", 0, "", "needs --ros2");
+            }
             try {
               Serve(*request);
             } catch (const robot::RobotError& e) {

@@ -24,6 +24,7 @@
 #include "pirouette/io/run_log.h"
 #include "pirouette/io/world_file.h"
 #include "pirouette/robot/remote_robot.h"
+#include "pirouette/robot/ros2/ros2_robot.h"
 #include "pirouette/run/progress_line.h"
 #include "pirouette/run/simulated_exploration.h"
 #include "pirouette/sim/simulated_robot.h"
@@ -160,10 +161,23 @@ RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* 
 
 // Connects to the robot at request.robot_url (before any output is made,
 // so that a robot that is not there leaves nothing behind).
-std::unique_ptr<robot::RemoteRobot> ConnectRobot(const ExploreRequest& request,
-                                                 const RobotDescription& robot_info) {
+std::unique_ptr<robot::Robot> ConnectRobot(const ExploreRequest& request,
+                                           const RobotDescription& robot_info) {
   if (request.options.method == vision::MaskSource::kTruth) {
     throw core::InputError("--method", 0, "", "the truth is only known in the simulator");
+  }
+  if (request.robot_url == kRos2Robot) {
+    robot::ros2::Ros2RobotOptions ros2;
+    const Ros2PublishOptions dds = request.ros2_publish.value_or(Ros2PublishOptions{});
+    ros2.domain_id = dds.domain_id;
+    ros2.network = dds.network;
+    ros2.ros_namespace = dds.ros_namespace;
+    ros2.frame_width = robot_info.camera.width();
+    ros2.frame_height = robot_info.camera.height();
+    ros2.stop_requested = request.options.stop_requested;
+    const auto timeout = std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
+    ros2.connect_timeout = std::min(ros2.connect_timeout, timeout);
+    return std::make_unique<robot::ros2::Ros2Robot>(ros2);
   }
   robot::RemoteRobotOptions remote;
   remote.reply_timeout = std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
@@ -173,7 +187,7 @@ std::unique_ptr<robot::RemoteRobot> ConnectRobot(const ExploreRequest& request,
 }
 
 // Explores through a connected robot.
-ExplorationResult ExploreRemote(robot::RemoteRobot& robot, const ExploreRequest& request,
+ExplorationResult ExploreRemote(robot::Robot& robot, const ExploreRequest& request,
                                 const ExplorationOptions& options,
                                 const RobotDescription& robot_info,
                                 const ExplorationObserver& observer) {
@@ -286,7 +300,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
         OdometryModelOf(options.odometry_noise.value_or(world->robot().odometry_noise));
   }
   const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
-  std::unique_ptr<robot::RemoteRobot> remote;
+  std::unique_ptr<robot::Robot> remote;
   if (!request.robot_url.empty()) remote = ConnectRobot(request, robot_info);
   std::optional<Ros2RunPublisher> ros2;
   if (request.ros2_publish) ros2.emplace(*request.ros2_publish);

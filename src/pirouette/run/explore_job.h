@@ -5,11 +5,15 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "pirouette/run/explorer.h"
 #include "pirouette/run/ros2_run_publisher.h"
 
 namespace pirouette::run {
+
+// `--robot ros2`: a ROS 2 robot over DDS (robot::ros2::Ros2Robot).
+inline constexpr std::string_view kRos2Robot = "ros2";
 
 // What `pirouette explore` was asked.
 struct ExploreRequest {
@@ -21,8 +25,10 @@ struct ExploreRequest {
   // Non-empty: also write a run log (pirouette-log/1) of the run there.
   std::string record_dir;
   // Non-empty: explore with the robot at this tcp://HOST:PORT (the line
-  // protocol, docs/robot-protocol.md) instead of in the simulator; the world,
-  // when given, is then only for the camera, the radius and the evaluation.
+  // protocol, docs/robot-protocol.md), or with the ROS 2 robot on DDS
+  // (kRos2Robot: its domain, network and namespace are ros2_publish's),
+  // instead of in the simulator; the world, when given, is then only for the
+  // camera, the radius and the evaluation.
   std::string robot_url;
   std::string camera_path;        // the robot's camera file (default: the world's)
   double radius_m = 0.0;          // the robot's radius (default: the world's)

@@ -30,6 +30,7 @@ PIROUETTE_ROS2_MESSAGE(sensor_msgs_msg_dds__Image_, "sensor_msgs/msg/Image");
 PIROUETTE_ROS2_MESSAGE(sensor_msgs_msg_dds__CompressedImage_, "sensor_msgs/msg/CompressedImage");
 PIROUETTE_ROS2_MESSAGE(sensor_msgs_msg_dds__CameraInfo_, "sensor_msgs/msg/CameraInfo");
 PIROUETTE_ROS2_MESSAGE(tf2_msgs_msg_dds__TFMessage_, "tf2_msgs/msg/TFMessage");
+PIROUETTE_ROS2_MESSAGE(rosgraph_msgs_msg_dds__Clock_, "rosgraph_msgs/msg/Clock");
 // NOLINTEND(cppcoreguidelines-macro-usage)
 #undef PIROUETTE_ROS2_MESSAGE
 

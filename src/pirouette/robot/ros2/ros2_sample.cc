@@ -21,6 +21,12 @@ builtin_interfaces_msg_dds__Time_ RosTime(std::chrono::system_clock::time_point 
   return time;
 }
 
+builtin_interfaces_msg_dds__Time_ RosTimeOfSeconds(double seconds) {
+  return RosTime(std::chrono::system_clock::time_point(
+      std::chrono::duration_cast<std::chrono::system_clock::duration>(
+          std::chrono::duration<double>(seconds))));
+}
+
 double Seconds(const builtin_interfaces_msg_dds__Time_& time) {
   return static_cast<double>(time.sec) + 1e-9 * static_cast<double>(time.nanosec);
 }

@@ -79,6 +79,10 @@ void ResizeSequence(Seq& seq, std::size_t count) {
 // since the Unix epoch).
 builtin_interfaces_msg_dds__Time_ RosTime(std::chrono::system_clock::time_point when);
 
+// builtin_interfaces/Time of a number of seconds (≥ 0) on some clock (a
+// simulator's, since it started).
+builtin_interfaces_msg_dds__Time_ RosTimeOfSeconds(double seconds);
+
 // Seconds since the epoch of a builtin_interfaces/Time.
 double Seconds(const builtin_interfaces_msg_dds__Time_& time);
 
