@@ -15,12 +15,12 @@ namespace {
 using Model = Distortion::Model;
 
 // How far off the axis (radians) the lenses below see.
-constexpr double kWideAngleMax = 0.8;  // 46°: a 92° field of view
-constexpr double kFisheyeMax = 1.5;    // 86°: a 172° field of view
+constexpr double kWideAngleMax = 1.04;  // 60°: a 120° field of view
+constexpr double kFisheyeMax = 1.5;     // 86°: a 172° field of view
 
-// A wide-angle lens (a Raspberry Pi camera's) as OpenCV's rational model fits it.
+// A wide-angle lens (120° across its diagonal) in OpenCV's rational model.
 Distortion WideAngle() {
-  const std::array<double, 8> d = {0.2, -0.05, 0.001, -0.0008, 0.001, 0.55, 0.05, 0.002};
+  const std::array<double, 8> d = {0.1, 0.01, 0.001, -0.0008, 0.0005, 0.45, 0.02, 0.0001};
   return *Distortion::FromCoefficients(Model::kRationalPolynomial, d);
 }
 
@@ -53,7 +53,7 @@ TEST(DistortionTest, CoefficientCountsFitTheModel) {
   EXPECT_FALSE(Distortion::FromCoefficients(Model::kRationalPolynomial, five).has_value());
   EXPECT_FALSE(Distortion::FromCoefficients(Model::kEquidistant, five).has_value());
   EXPECT_EQ(WideAngle().Coefficients(),
-            (std::vector<double>{0.2, -0.05, 0.001, -0.0008, 0.001, 0.55, 0.05, 0.002}));
+            (std::vector<double>{0.1, 0.01, 0.001, -0.0008, 0.0005, 0.45, 0.02, 0.0001}));
   EXPECT_EQ(Fisheye().Coefficients(), (std::vector<double>{0.04, -0.012, 0.003, -0.0005}));
   EXPECT_EQ(Fisheye().k1, 0.04);
   EXPECT_EQ(Fisheye().k4, -0.0005);
