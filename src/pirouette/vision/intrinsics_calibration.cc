@@ -139,7 +139,15 @@ IntrinsicsCalibration CalibrateIntrinsics(const std::vector<ChessboardView>& vie
   result.intrinsics = {k.at<double>(0, 0), k.at<double>(1, 1), k.at<double>(0, 2),
                        k.at<double>(1, 2)};
   const cv::Mat d = s.distortion.reshape(1, 1);
-  const std::vector<double> coefficients(d.begin<double>(), d.end<double>());
+  // OpenCV may return more coefficients than the model has (with zeros for
+  // the thin prism and tilt terms it did not fit): the model's come first.
+  std::vector<double> coefficients(d.begin<double>(), d.end<double>());
+  camera::Distortion of_model;
+  of_model.model = options.model;
+  const std::size_t count = of_model.Coefficients().size();
+  if (coefficients.size() < count)
+    throw std::logic_error("CalibrateIntrinsics: too few coefficients");
+  coefficients.resize(count);
   result.distortion = *camera::Distortion::FromCoefficients(options.model, coefficients);
   result.rms_px = s.rms_px;
   for (std::size_t i = 0; i < kept.size(); ++i) {
