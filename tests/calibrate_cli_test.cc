@@ -342,6 +342,7 @@ TEST_F(CalibrateCliTest, BadInputIsRefusedWithExitCodeTwo) {
   expect_refused(in + " --board 9x6 --images " + Path("empty"), Path("empty"));
   expect_refused(in + " --board 9by6 --images " + Path("blank"), "--board");
   expect_refused(in + " --board 1x6 --images " + Path("blank"), "--board");
+  expect_refused(in + " --board 9x6 --model fisheye --images " + Path("blank"), "--model");
   expect_refused(in + " --board 9x6 --images " + Path("blank"), "no 9x6 board found");
   expect_refused(in + " --board 9x6 --images " + Path("broken"), "not_an_image.png");
   expect_refused(
