@@ -33,6 +33,10 @@ CameraModel::CameraModel(std::string name, int width, int height, const Intrinsi
                          distortion.k4, distortion.k5, distortion.k6}) {
     if (!std::isfinite(k)) throw std::invalid_argument("CameraModel: distortion must be finite");
   }
+  if (Distortion::FromCoefficients(distortion.model, distortion.Coefficients()) != distortion) {
+    throw std::invalid_argument(
+        "CameraModel: a coefficient the distortion model does not use is set");
+  }
   for (const double k : vignetting.k) {
     if (!(k >= 0.0) || !std::isfinite(k)) {
       throw std::invalid_argument("CameraModel: vignetting k must be finite and >= 0");

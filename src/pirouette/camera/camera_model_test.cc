@@ -56,6 +56,18 @@ TEST(CameraModelTest, RefusesBadValues) {
                std::invalid_argument);
 }
 
+TEST(CameraModelTest, RefusesCoefficientsItsModelDoesNotUse) {
+  Distortion fisheye;
+  fisheye.model = Distortion::Model::kEquidistant;
+  fisheye.p1 = 0.01;
+  EXPECT_THROW(CameraModel("bad", 320, 240, kPaperIntrinsics, fisheye, kMount, {}),
+               std::invalid_argument);
+  Distortion plumb_bob;
+  plumb_bob.k4 = 0.1;
+  EXPECT_THROW(CameraModel("bad", 320, 240, kPaperIntrinsics, plumb_bob, kMount, {}),
+               std::invalid_argument);
+}
+
 TEST(CameraModelTest, BackprojectThenProjectReturnsThePixel) {
   const CameraModel camera = PaperCamera();
   for (const Eigen::Vector2d& pixel : DensePixels(camera)) {
