@@ -145,8 +145,9 @@ IntrinsicsCalibration CalibrateIntrinsics(const std::vector<ChessboardView>& vie
   camera::Distortion of_model;
   of_model.model = options.model;
   const std::size_t count = of_model.Coefficients().size();
-  if (coefficients.size() < count)
+  if (coefficients.size() < count) {
     throw std::logic_error("CalibrateIntrinsics: too few coefficients");
+  }
   coefficients.resize(count);
   result.distortion = *camera::Distortion::FromCoefficients(options.model, coefficients);
   result.rms_px = s.rms_px;
