@@ -241,6 +241,73 @@ TEST_F(CalibrateCliTest, IntrinsicsFromRenderedBoardsWithinOnePercent) {
       worst_px);
 }
 
+TEST_F(CalibrateCliTest, FisheyeIntrinsicsFromRenderedBoardsWithModelEquidistant) {
+  // A fisheye about 120° across, rendered; views as above, nearer so that
+  // the board reaches far out into the lens's periphery.
+  const std::vector<double> k = {0.04, -0.012, 0.003, -0.0005};
+  const auto fisheye = [&k](const camera::Mount& mount) {
+    return CameraModel(
+        "fisheye", 320, 240, {150.0, 150.0, 159.5, 119.5},
+        *camera::Distortion::FromCoefficients(camera::Distortion::Model::kEquidistant, k), mount,
+        {});
+  };
+  const Eigen::Vector2d centre(4.0, 4.0);
+  const sim::Chessboard board = Board(centre, 9, 6, 0.025, 0.0);
+  const sim::World world = FloorWorld({board}, {110, 105, 100});
+  fs::create_directories(Path("views"));
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int rendered = 0;
+  for (int i = 0; i < 14; ++i) {
+    const double tilt = DegToRad(35.0 + 45.0 * i / 13.0);
+    const double roll = DegToRad(i % 2 == 0 ? 30.0 - 5.0 * i : -25.0 + 5.0 * i);
+    bool placed = false;
+    for (int attempt = 0; attempt < 400 && !placed; ++attempt) {
+      const double slant = 0.12 + 0.1 * unit(rng);
+      const CameraModel cam = fisheye({slant * std::sin(tilt), tilt, 0.0});
+      const Eigen::Vector2d target(159.5 + 200.0 * (unit(rng) - 0.5),
+                                   119.5 + 150.0 * (unit(rng) - 0.5));
+      const Eigen::Isometry3d robot_T_camera = RobotTCamera(cam, roll);
+      const Eigen::Vector3d ray = robot_T_camera.linear() * cam.Backproject(target);
+      if (!(ray.z() < -0.05)) continue;
+      const Eigen::Vector3d origin = robot_T_camera.translation();
+      const Eigen::Vector2d seen = (origin - origin.z() / ray.z() * ray).head<2>();
+      const double heading = 2.0 * std::numbers::pi * unit(rng);
+      const Eigen::Vector2d xy = centre - Eigen::Rotation2Dd(heading).toRotationMatrix() * seen;
+      const Pose2 pose(xy.x(), xy.y(), heading);
+      if (!WellInView(board, cam, pose, 3.0, 6.0, roll)) continue;
+      sim::RenderOptions options;
+      options.seed = 200 + i;
+      options.roll_rad = roll;
+      sim::Renderer renderer(world, cam, options);
+      pirouette::io::WritePng(Path("views/view" + std::to_string(i) + ".png"),
+                              renderer.Render(pose));
+      placed = true;
+      ++rendered;
+    }
+  }
+  ASSERT_GE(rendered, 10);
+
+  const Result r =
+      RunPirouette("calibrate intrinsics --model equidistant --images " + Path("views") +
+                   " --board 9x6 --square 0.025 --out " + Path("camera.yaml"));
+  ASSERT_EQ(r.exit_code, 0) << r.stderr_only;
+  const nlohmann::json json = Report(r);
+  EXPECT_EQ(json.at("distortion_model"), "equidistant") << json;
+  EXPECT_EQ(json.at("distortion").size(), 4u) << json;
+  EXPECT_GE(Number(json, "views_used"), 8) << json;
+  EXPECT_LT(Number(json, "reprojection_error_px"), 0.5) << json;
+  EXPECT_NEAR(Number(json, "fx") / 150.0, 1.0, 0.02) << json;
+  EXPECT_NEAR(Number(json, "fy") / 150.0, 1.0, 0.02) << json;
+  const CameraModel written = pirouette::io::LoadCameraFile(Path("camera.yaml"));
+  EXPECT_EQ(written.distortion().model, camera::Distortion::Model::kEquidistant);
+  EXPECT_NEAR(written.distortion().k1, 0.04, 0.01) << json;  // measured 0.037
+  std::printf(
+      "measured: fisheye intrinsics from %d views: fx %.2f (150), k1 %.4f (0.04), "
+      "reprojection %.3f px\n",
+      rendered, Number(json, "fx"), written.distortion().k1, Number(json, "reprojection_error_px"));
+}
+
 TEST_F(CalibrateCliTest, VignettingFromARenderedFlatFloor) {
   // Looking steeply down at a big untextured floor: uniform light fills the view.
   const CameraModel truth = TruthCamera({0.30, DegToRad(70.0), 0.03});
@@ -342,6 +409,7 @@ TEST_F(CalibrateCliTest, BadInputIsRefusedWithExitCodeTwo) {
   expect_refused(in + " --board 9x6 --images " + Path("empty"), Path("empty"));
   expect_refused(in + " --board 9by6 --images " + Path("blank"), "--board");
   expect_refused(in + " --board 1x6 --images " + Path("blank"), "--board");
+  expect_refused(in + " --board 9x6 --model fisheye --images " + Path("blank"), "--model");
   expect_refused(in + " --board 9x6 --images " + Path("blank"), "no 9x6 board found");
   expect_refused(in + " --board 9x6 --images " + Path("broken"), "not_an_image.png");
   expect_refused(

@@ -62,6 +62,10 @@ Command AddCalibrateCommand(CLI::App& parent) {
   in->add_option("--k-coefficients", intrinsics->radial_coefficients,
                  "radial distortion coefficients to estimate: 2 (k1, k2; k3 = 0) or 3")
       ->capture_default_str();
+  in->add_option("--model", intrinsics->model,
+                 "the lens's distortion model: plumb_bob (most lenses), rational_polynomial "
+                 "(wide angle, 8 coefficients) or equidistant (fisheye, OpenCV's cv::fisheye)")
+      ->capture_default_str();
 
   auto vignetting = std::make_shared<tools::VignettingCalibrationRequest>();
   CLI::App* vg = cmd->add_subcommand(

@@ -9,7 +9,7 @@
 namespace pirouette::camera {
 
 CameraModel::CameraModel(std::string name, int width, int height, const Intrinsics& intrinsics,
-                         const PlumbBob& distortion, const Mount& mount,
+                         const Distortion& distortion, const Mount& mount,
                          const Vignetting& vignetting)
     : name_(std::move(name)),
       width_(width),
@@ -29,9 +29,13 @@ CameraModel::CameraModel(std::string name, int width, int height, const Intrinsi
     throw std::invalid_argument(
         "CameraModel: the tilt must lie strictly between -90 and 90 degrees");
   }
-  for (const double k :
-       {distortion.k1, distortion.k2, distortion.p1, distortion.p2, distortion.k3}) {
+  for (const double k : {distortion.k1, distortion.k2, distortion.p1, distortion.p2, distortion.k3,
+                         distortion.k4, distortion.k5, distortion.k6}) {
     if (!std::isfinite(k)) throw std::invalid_argument("CameraModel: distortion must be finite");
+  }
+  if (Distortion::FromCoefficients(distortion.model, distortion.Coefficients()) != distortion) {
+    throw std::invalid_argument(
+        "CameraModel: a coefficient the distortion model does not use is set");
   }
   for (const double k : vignetting.k) {
     if (!(k >= 0.0) || !std::isfinite(k)) {
@@ -50,35 +54,11 @@ CameraModel::CameraModel(std::string name, int width, int height, const Intrinsi
 }
 
 Eigen::Vector2d CameraModel::Distort(const Eigen::Vector2d& undistorted) const {
-  const double x = undistorted.x();
-  const double y = undistorted.y();
-  const double r2 = x * x + y * y;
-  const auto& d = distortion_;
-  const double radial = 1.0 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
-  return {x * radial + 2.0 * d.p1 * x * y + d.p2 * (r2 + 2.0 * x * x),
-          y * radial + d.p1 * (r2 + 2.0 * y * y) + 2.0 * d.p2 * x * y};
+  return distortion_.Distort(undistorted);
 }
 
 Eigen::Vector2d CameraModel::Undistort(const Eigen::Vector2d& distorted) const {
-  // Newton's method on Distort(p) - distorted, from p = distorted.
-  Eigen::Vector2d p = distorted;
-  const auto& d = distortion_;
-  for (int i = 0; i < 50; ++i) {
-    const Eigen::Vector2d residual = Distort(p) - distorted;
-    if (residual.norm() < 1e-14) break;
-    const double x = p.x();
-    const double y = p.y();
-    const double r2 = x * x + y * y;
-    const double radial = 1.0 + r2 * (d.k1 + r2 * (d.k2 + r2 * d.k3));
-    const double dradial_dr2 = d.k1 + r2 * (2.0 * d.k2 + 3.0 * r2 * d.k3);
-    Eigen::Matrix2d jacobian;
-    jacobian(0, 0) = radial + 2.0 * x * x * dradial_dr2 + 2.0 * d.p1 * y + 6.0 * d.p2 * x;
-    jacobian(0, 1) = 2.0 * x * y * dradial_dr2 + 2.0 * d.p1 * x + 2.0 * d.p2 * y;
-    jacobian(1, 0) = 2.0 * x * y * dradial_dr2 + 2.0 * d.p1 * x + 2.0 * d.p2 * y;
-    jacobian(1, 1) = radial + 2.0 * y * y * dradial_dr2 + 6.0 * d.p1 * y + 2.0 * d.p2 * x;
-    p -= jacobian.inverse() * residual;
-  }
-  return p;
+  return distortion_.Undistort(distorted).value_or(distorted);
 }
 
 std::optional<Eigen::Vector2d> CameraModel::Project(const Eigen::Vector3d& p_camera) const {
@@ -91,8 +71,14 @@ std::optional<Eigen::Vector2d> CameraModel::Project(const Eigen::Vector3d& p_cam
 Eigen::Vector3d CameraModel::Backproject(const Eigen::Vector2d& pixel) const {
   const Eigen::Vector2d distorted((pixel.x() - intrinsics_.cx) / intrinsics_.fx,
                                   (pixel.y() - intrinsics_.cy) / intrinsics_.fy);
+  if (const std::optional<Eigen::Vector3d> ray = distortion_.Ray(distorted)) return *ray;
   const Eigen::Vector2d undistorted = Undistort(distorted);
   return Eigen::Vector3d(undistorted.x(), undistorted.y(), 1.0).normalized();
+}
+
+std::optional<Eigen::Vector3d> CameraModel::SeenRay(const Eigen::Vector2d& pixel) const {
+  return distortion_.Ray({(pixel.x() - intrinsics_.cx) / intrinsics_.fx,
+                          (pixel.y() - intrinsics_.cy) / intrinsics_.fy});
 }
 
 Eigen::Isometry3d CameraModel::robot_T_camera() const {
@@ -112,7 +98,9 @@ Eigen::Isometry3d CameraModel::robot_T_camera() const {
 
 std::optional<Eigen::Vector2d> CameraModel::FloorPoint(const Eigen::Vector2d& pixel) const {
   const Eigen::Isometry3d robot_T_camera = this->robot_T_camera();
-  const Eigen::Vector3d ray_robot = robot_T_camera.linear() * Backproject(pixel);
+  const std::optional<Eigen::Vector3d> ray = SeenRay(pixel);
+  if (!ray) return std::nullopt;
+  const Eigen::Vector3d ray_robot = robot_T_camera.linear() * *ray;
   // Rays that go down less steeply than this never meet the floor within any
   // useful range (about 10 km from 0.1 m); they count as above the horizon.
   if (!(ray_robot.z() < -1e-5)) return std::nullopt;

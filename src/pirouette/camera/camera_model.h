@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "pirouette/camera/distortion.h"
+
 namespace pirouette::camera {
 
 // Pinhole intrinsics in pixels (the camera_matrix of ROS's camera_info, no skew).
@@ -15,16 +17,6 @@ struct Intrinsics {
   double fy = 0.0;
   double cx = 0.0;
   double cy = 0.0;
-};
-
-// OpenCV's / ROS's `plumb_bob` lens distortion (Brown–Conrady), on normalised
-// image coordinates (x/z, y/z): radial k1, k2, k3 and tangential p1, p2.
-struct PlumbBob {
-  double k1 = 0.0;
-  double k2 = 0.0;
-  double p1 = 0.0;
-  double p2 = 0.0;
-  double k3 = 0.0;
 };
 
 // Where the camera sits on the robot. The robot frame is x forward, y left,
@@ -44,36 +36,44 @@ struct Vignetting {
   std::array<double, 3> k = {0.0, 0.0, 0.0};
 };
 
-// The camera model: intrinsics, plumb_bob distortion, vignetting and mount.
+// The camera model: intrinsics, distortion (plumb_bob, rational_polynomial or
+// equidistant), vignetting and mount.
 // Immutable; the constructor checks its values (a bad value is a bug here:
 // the file loader refuses bad input with a message before it gets here).
 //
-// OpenCV implements the same distortion (cv::projectPoints), but DESIGN.md
+// OpenCV implements the same distortions (cv::projectPoints,
+// cv::fisheye::projectPoints), but DESIGN.md
 // keeps the camera layer free of OpenCV; tests check this code against it.
 class CameraModel {
  public:
   CameraModel(std::string name, int width, int height, const Intrinsics& intrinsics,
-              const PlumbBob& distortion, const Mount& mount, const Vignetting& vignetting);
+              const Distortion& distortion, const Mount& mount, const Vignetting& vignetting);
 
   const std::string& name() const { return name_; }
   int width() const { return width_; }
   int height() const { return height_; }
   const Intrinsics& intrinsics() const { return intrinsics_; }
-  const PlumbBob& distortion() const { return distortion_; }
+  const Distortion& distortion() const { return distortion_; }
   const Mount& mount() const { return mount_; }
   const Vignetting& vignetting() const { return vignetting_; }
 
-  // Normalised undistorted → normalised distorted coordinates (the plumb_bob model).
+  // Normalised undistorted → normalised distorted coordinates (the distortion's model).
   Eigen::Vector2d Distort(const Eigen::Vector2d& undistorted) const;
-  // The inverse of Distort, by Newton's method to 1e-12; exact within the
-  // region where the model is monotonic (every pixel of a sane calibration).
+  // The inverse of Distort, to 1e-12; exact within the region where the model
+  // is monotonic (every pixel of a sane calibration). Where no point in front
+  // of the camera is distorted to `distorted` (Distortion::Undistort's
+  // nullopt: beyond a fisheye's image circle), `distorted` itself.
   Eigen::Vector2d Undistort(const Eigen::Vector2d& distorted) const;
 
   // The pixel where a point in the camera frame (OpenCV: x right, y down,
   // z along the axis) is seen, with distortion; nullopt when z <= 0.
   std::optional<Eigen::Vector2d> Project(const Eigen::Vector3d& p_camera) const;
-  // The unit ray, in the camera frame, of the light that reaches `pixel`.
+  // The unit ray, in the camera frame, of the light that reaches `pixel`
+  // (for a pixel that sees nothing, as SeenRay's nullopt, the ray of Undistort's answer).
   Eigen::Vector3d Backproject(const Eigen::Vector2d& pixel) const;
+  // The same, or nullopt where no light reaches `pixel` (beyond a fisheye's
+  // image circle). A fisheye's rays may lie up to 90° off the axis.
+  std::optional<Eigen::Vector3d> SeenRay(const Eigen::Vector2d& pixel) const;
 
   // The camera's pose in the robot frame (x forward, y left, z up).
   Eigen::Isometry3d robot_T_camera() const;
@@ -93,7 +93,7 @@ class CameraModel {
   int width_;
   int height_;
   Intrinsics intrinsics_;
-  PlumbBob distortion_;
+  Distortion distortion_;
   Mount mount_;
   Vignetting vignetting_;
   double r_max_squared_;  // squared distance from the principal point to the farthest corner

@@ -56,6 +56,18 @@ TEST(CameraModelTest, RefusesBadValues) {
                std::invalid_argument);
 }
 
+TEST(CameraModelTest, RefusesCoefficientsItsModelDoesNotUse) {
+  Distortion fisheye;
+  fisheye.model = Distortion::Model::kEquidistant;
+  fisheye.p1 = 0.01;
+  EXPECT_THROW(CameraModel("bad", 320, 240, kPaperIntrinsics, fisheye, kMount, {}),
+               std::invalid_argument);
+  Distortion plumb_bob;
+  plumb_bob.k4 = 0.1;
+  EXPECT_THROW(CameraModel("bad", 320, 240, kPaperIntrinsics, plumb_bob, kMount, {}),
+               std::invalid_argument);
+}
+
 TEST(CameraModelTest, BackprojectThenProjectReturnsThePixel) {
   const CameraModel camera = PaperCamera();
   for (const Eigen::Vector2d& pixel : DensePixels(camera)) {
@@ -211,6 +223,41 @@ TEST(CameraModelTest, VignettingGain) {
 
   // No vignetting: a gain of 1 everywhere.
   EXPECT_EQ(PaperCamera().VignettingGain(2, {0.0, 0.0}), 1.0);
+}
+
+// A fisheye of about 150° across (cv::fisheye's model, ROS's equidistant).
+CameraModel FisheyeCamera() {
+  const std::vector<double> k = {0.04, -0.012, 0.003, -0.0005};
+  return {"fisheye",
+          320,
+          240,
+          {117.0, 117.0, 159.5, 119.5},
+          *Distortion::FromCoefficients(Distortion::Model::kEquidistant, k),
+          kMount,
+          {}};
+}
+
+TEST(CameraModelTest, AFisheyesPixelsBackprojectAndProjectBack) {
+  const CameraModel camera = FisheyeCamera();
+  int seen = 0;
+  for (const Eigen::Vector2d& pixel : DensePixels(camera)) {
+    const std::optional<Eigen::Vector3d> ray = camera.SeenRay(pixel);
+    if (!ray) continue;  // beyond 90° off the axis: the corners
+    ++seen;
+    EXPECT_NEAR((camera.Backproject(pixel) - *ray).norm(), 0.0, 1e-15);
+    if (!(ray->z() > 1e-6)) continue;
+    const std::optional<Eigen::Vector2d> projected = camera.Project(*ray);
+    ASSERT_TRUE(projected.has_value());
+    EXPECT_NEAR((*projected - pixel).norm(), 0.0, 1e-6) << pixel.transpose();
+  }
+  EXPECT_GT(seen, static_cast<int>(DensePixels(camera).size() * 9 / 10));
+  // Across the middle row: about 150° from edge to edge.
+  const double left = std::acos(camera.SeenRay({0.0, 119.5})->z());
+  const double right = std::acos(camera.SeenRay({319.0, 119.5})->z());
+  EXPECT_NEAR(core::RadToDeg(left + right), 150.0, 2.0);
+  // A corner lies past 90° off the axis: it sees nothing, and no floor.
+  EXPECT_FALSE(camera.SeenRay({0.0, 0.0}).has_value());
+  EXPECT_FALSE(camera.FloorPoint({0.0, 239.0}).has_value());
 }
 
 }  // namespace

@@ -21,7 +21,7 @@
 namespace pirouette::io {
 namespace {
 
-constexpr std::string_view kSupportedDistortion = "plumb_bob";
+constexpr std::string_view kSupportedDistortion = "plumb_bob, rational_polynomial and equidistant";
 
 // A ROS matrix {rows, cols, data} of `rows` × `cols` numbers (`cols` = 0:
 // any number of columns, which the file's `cols` gives).
@@ -84,25 +84,52 @@ camera::Intrinsics ReadIntrinsics(const std::string& file, const YamlMap& map) {
   return {k[0], k[4], k[2], k[5]};
 }
 
-// distortion_model (plumb_bob) and its 5 distortion_coefficients.
-camera::PlumbBob ReadDistortion(const std::string& file, const YamlMap& map) {
-  const YamlField model_field = map.Required("distortion_model");
-  const std::string model = ReadName(file, model_field);
-  if (model != kSupportedDistortion) {
-    ThrowInputError(file, model_field,
-                    fmt::format("unsupported distortion model '{}'; pirouette reads {} only", model,
-                                kSupportedDistortion));
+// What each model's coefficients are, in ROS's order, for messages.
+std::string_view CoefficientNames(camera::Distortion::Model model) {
+  switch (model) {
+    case camera::Distortion::Model::kPlumbBob:
+      return "k1, k2, p1, p2, k3";
+    case camera::Distortion::Model::kRationalPolynomial:
+      return "k1, k2, p1, p2, k3, k4, k5, k6";
+    case camera::Distortion::Model::kEquidistant:
+      return "k1, k2, k3, k4";
   }
+  return "";
+}
+
+// distortion_model (plumb_bob, rational_polynomial or equidistant; missing:
+// plumb_bob, with a warning, as ROS's camera_calibration_parsers read it) and
+// its distortion_coefficients, 1 row of as many as the model has (5, 8, 4).
+camera::Distortion ReadDistortion(const std::string& file, const YamlMap& map) {
+  camera::Distortion::Model model = camera::Distortion::Model::kPlumbBob;
+  if (const auto model_field = map.Optional("distortion_model")) {
+    const std::string name = ReadName(file, *model_field);
+    const std::optional<camera::Distortion::Model> named = camera::ModelNamed(name);
+    if (!named) {
+      ThrowInputError(file, *model_field,
+                      fmt::format("unsupported distortion model '{}'; pirouette reads {}", name,
+                                  kSupportedDistortion));
+    }
+    model = *named;
+  } else {
+    // The one message this layer prints: the file loads, but the user should know.
+    std::fprintf(stderr, "%s: warning: no distortion_model; read as plumb_bob, as ROS does\n",
+                 file.c_str());
+  }
+  const std::string_view model_name = camera::ModelName(model);
   const YamlField d_field = map.Required("distortion_coefficients");
   const YamlField d_data_field = ReadMap(file, d_field, {"rows", "cols", "data"}).Required("data");
   const std::size_t d_count = ReadList(file, d_data_field, "a list of numbers").size();
-  if (d_count != 5) {
-    ThrowInputError(
-        file, d_data_field,
-        fmt::format("plumb_bob takes 5 coefficients (k1, k2, p1, p2, k3), got {}", d_count));
+  camera::Distortion of_model;
+  of_model.model = model;
+  const std::size_t expected = of_model.Coefficients().size();
+  if (d_count != expected) {
+    ThrowInputError(file, d_data_field,
+                    fmt::format("{} takes {} coefficients ({}), got {}", model_name, expected,
+                                CoefficientNames(model), d_count));
   }
-  const std::vector<double> d = ReadMatrix(file, d_field, 1, 5).values;
-  return {d[0], d[1], d[2], d[3], d[4]};
+  const std::vector<double> d = ReadMatrix(file, d_field, 1, static_cast<int>(expected)).values;
+  return *camera::Distortion::FromCoefficients(model, d);
 }
 
 // mount: height (> 0), tilt (degrees in (-90, 90)), forward (optional).
@@ -154,7 +181,7 @@ camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
   std::string name;
   if (const auto field = map.Optional("camera_name")) name = ReadName(file, *field);
   const camera::Intrinsics intrinsics = ReadIntrinsics(file, map);
-  const camera::PlumbBob distortion = ReadDistortion(file, map);
+  const camera::Distortion distortion = ReadDistortion(file, map);
   const camera::Mount mount = ReadMount(file, map);
   const camera::Vignetting vignetting = ReadVignetting(file, map);
   // rectification_matrix and projection_matrix are accepted and ignored (SPEC.md).
@@ -177,14 +204,14 @@ std::string TiltText(double tilt_rad) {
   return NumberText(degrees);
 }
 
-void EmitNumbers(YAML::Emitter& out, std::initializer_list<double> values) {
+void EmitNumbers(YAML::Emitter& out, const std::vector<double>& values) {
   out << YAML::Flow << YAML::BeginSeq;
   for (const double value : values) out << NumberText(value);
   out << YAML::EndSeq;
 }
 
 void EmitMatrix(YAML::Emitter& out, std::string_view key, int rows, int cols,
-                std::initializer_list<double> data) {
+                const std::vector<double>& data) {
   out << YAML::Key << std::string(key) << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "rows" << YAML::Value << rows;
   out << YAML::Key << "cols" << YAML::Value << cols;
@@ -195,7 +222,7 @@ void EmitMatrix(YAML::Emitter& out, std::string_view key, int rows, int cols,
 
 std::string CameraText(const camera::CameraModel& camera) {
   const camera::Intrinsics& in = camera.intrinsics();
-  const camera::PlumbBob& d = camera.distortion();
+  const camera::Distortion& d = camera.distortion();
   const camera::Mount& mount = camera.mount();
   const auto& k = camera.vignetting().k;
 
@@ -210,8 +237,10 @@ std::string CameraText(const camera::CameraModel& camera) {
   if (camera.name().empty() || ScalarKindOf(plain) == ScalarKind::kNull) out << YAML::DoubleQuoted;
   out << camera.name();
   EmitMatrix(out, "camera_matrix", 3, 3, {in.fx, 0.0, in.cx, 0.0, in.fy, in.cy, 0.0, 0.0, 1.0});
-  out << YAML::Key << "distortion_model" << YAML::Value << std::string(kSupportedDistortion);
-  EmitMatrix(out, "distortion_coefficients", 1, 5, {d.k1, d.k2, d.p1, d.p2, d.k3});
+  out << YAML::Key << "distortion_model" << YAML::Value << std::string(camera::ModelName(d.model));
+  const std::vector<double> coefficients = d.Coefficients();
+  EmitMatrix(out, "distortion_coefficients", 1, static_cast<int>(coefficients.size()),
+             coefficients);
   // What ROS tools expect of a monocular camera; pirouette ignores both.
   EmitMatrix(out, "rectification_matrix", 3, 3, {1, 0, 0, 0, 1, 0, 0, 0, 1});
   EmitMatrix(out, "projection_matrix", 3, 4,

@@ -258,8 +258,6 @@ const BadCase kBadCases[] = {
      "", "camera_matrix", 1, "missing required key"},
     {"MissingMatrixData", "  data: [277.13, 0, 159.5, 0, 276.5, 119.25, 0, 0, 1]\n", "",
      "camera_matrix.data", 5, "missing required key"},
-    {"MissingDistortionModel", "distortion_model: plumb_bob\n", "", "distortion_model", 1,
-     "missing required key"},
     {"MissingMount", "mount:\n  height: 0.11\n  tilt: 30\n  forward: 0.03\n", "", "mount", 1,
      "missing required key"},
     {"MissingMountHeight", "  height: 0.11\n", "", "mount.height", 22, "missing required key"},
@@ -306,10 +304,14 @@ const BadCase kBadCases[] = {
      "data holds 8 numbers"},
     {"MatrixRows", "camera_matrix:\n  rows: 3", "camera_matrix:\n  rows: 4", "camera_matrix.rows",
      5, "expected 3, got 4"},
-    {"UnsupportedModel", "distortion_model: plumb_bob", "distortion_model: equidistant",
-     "distortion_model", 8, "unsupported distortion model 'equidistant'"},
-    {"RationalPolynomial", "distortion_model: plumb_bob", "distortion_model: rational_polynomial",
-     "distortion_model", 8, "plumb_bob only"},
+    {"UnsupportedModel", "distortion_model: plumb_bob", "distortion_model: fisheye",
+     "distortion_model", 8, "unsupported distortion model 'fisheye'"},
+    {"RationalPolynomialOfFive", "distortion_model: plumb_bob",
+     "distortion_model: rational_polynomial", "distortion_coefficients.data", 12,
+     "rational_polynomial takes 8 coefficients (k1, k2, p1, p2, k3, k4, k5, k6), got 5"},
+    {"EquidistantOfFive", "distortion_model: plumb_bob", "distortion_model: equidistant",
+     "distortion_coefficients.data", 12,
+     "equidistant takes 4 coefficients (k1, k2, k3, k4), got 5"},
     {"FourCoefficients", "[-0.2, 0.05, 0.001, -0.002, 0.01]", "[-0.2, 0.05, 0.001, -0.002]",
      "distortion_coefficients.data", 12, "plumb_bob takes 5 coefficients"},
     {"EightCoefficients", "[-0.2, 0.05, 0.001, -0.002, 0.01]", "[-0.2, 0.05, 0, 0, 0, 0, 0, 0]",
@@ -376,6 +378,61 @@ TEST(CameraFileTest, NoCameraModelHoldsWhatNoFileMayHold) {
                    "steep", 320, 240, camera::Intrinsics{200, 200, 160, 120}, camera::PlumbBob{},
                    camera::Mount{0.1, core::DegToRad(100.0), 0.0}, camera::Vignetting{}),
                std::invalid_argument);
+}
+
+TEST(CameraFileTest, MissingDistortionModelReadsAsPlumbBob) {
+  const TempDir dir;
+  const camera::CameraModel camera =
+      LoadCameraFile(dir.Write("camera.yaml", Edited("distortion_model: plumb_bob\n", "")));
+  EXPECT_EQ(camera.distortion().model, camera::Distortion::Model::kPlumbBob);
+  EXPECT_EQ(camera.distortion().k3, 0.01);
+}
+
+TEST(CameraFileTest, ReadsRationalPolynomialAndEquidistant) {
+  const TempDir dir;
+  const camera::CameraModel wide = LoadCameraFile(dir.Write(
+      "wide.yaml",
+      Edited("distortion_model: plumb_bob\ndistortion_coefficients:\n  rows: 1\n  cols: 5\n  "
+             "data: [-0.2, 0.05, 0.001, -0.002, 0.01]\n",
+             "distortion_model: rational_polynomial\ndistortion_coefficients:\n  rows: 1\n  cols: "
+             "8\n  data: [0.2, -0.05, 0.001, -0.0008, 0.001, 0.55, 0.05, 0.002]\n")));
+  EXPECT_EQ(wide.distortion().model, camera::Distortion::Model::kRationalPolynomial);
+  EXPECT_EQ(wide.distortion().Coefficients(),
+            (std::vector<double>{0.2, -0.05, 0.001, -0.0008, 0.001, 0.55, 0.05, 0.002}));
+  const camera::CameraModel fisheye = LoadCameraFile(dir.Write(
+      "fisheye.yaml",
+      Edited("distortion_model: plumb_bob\ndistortion_coefficients:\n  rows: 1\n  cols: 5\n  "
+             "data: [-0.2, 0.05, 0.001, -0.002, 0.01]\n",
+             "distortion_model: equidistant\ndistortion_coefficients:\n  rows: 1\n  cols: 4\n  "
+             "data: [0.04, -0.012, 0.003, -0.0005]\n")));
+  EXPECT_EQ(fisheye.distortion().model, camera::Distortion::Model::kEquidistant);
+  EXPECT_EQ(fisheye.distortion().Coefficients(),
+            (std::vector<double>{0.04, -0.012, 0.003, -0.0005}));
+}
+
+TEST(CameraFileTest, EveryModelTextThenLoadGivesTheSameDistortion) {
+  const TempDir dir;
+  using Model = camera::Distortion::Model;
+  const std::vector<camera::Distortion> distortions = {
+      camera::PlumbBob{-0.2, 0.05, 0.001, -0.002, 0.01},
+      *camera::Distortion::FromCoefficients(
+          Model::kRationalPolynomial,
+          std::vector{1.0 / 3.0, -0.05, 1e-300, -0.0, 0.001, 0.55, 0.05, 123456789.123}),
+      *camera::Distortion::FromCoefficients(Model::kEquidistant,
+                                            std::vector{0.04, -1.0 / 7.0, 0.003, -0.0005}),
+  };
+  for (const camera::Distortion& d : distortions) {
+    const camera::CameraModel camera("lens", 640, 480, camera::Intrinsics{300, 301, 319.5, 239.5},
+                                     d, camera::Mount{0.2, 0.4, 0.05}, camera::Vignetting{});
+    const std::string text = CameraFileText(camera);
+    EXPECT_NE(
+        text.find(std::string("distortion_model: ") + std::string(camera::ModelName(d.model))),
+        std::string::npos)
+        << text;
+    const camera::CameraModel loaded = LoadCameraFile(dir.Write("saved.yaml", text));
+    EXPECT_EQ(loaded.distortion(), d) << text;
+    ExpectSameCamera(loaded, camera);
+  }
 }
 
 // The camera files shipped in worlds/ are the YAML files without a `format:` key.

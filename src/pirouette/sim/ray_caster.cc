@@ -166,7 +166,12 @@ bool RayCaster::SeesFreeFloor(const Eigen::Isometry3d& world_T_camera,
 }
 
 std::optional<Eigen::Vector2d> RayCaster::FloorPoint(int u, double v) const {
-  if (v != std::floor(v) || v < 0 || v >= camera_.height()) return camera_.FloorPoint({u, v});
+  // A wide lens's pixel may see nothing (beyond a fisheye's image circle),
+  // which only CameraModel::FloorPoint knows.
+  if (v != std::floor(v) || v < 0 || v >= camera_.height() ||
+      camera_.distortion().model != camera::Distortion::Model::kPlumbBob) {
+    return camera_.FloorPoint({u, v});
+  }
   // CameraModel::FloorPoint from the precomputed ray: the same arithmetic.
   const Eigen::Isometry3d robot_T_camera = camera_.robot_T_camera();
   const Eigen::Vector3d ray_robot = robot_T_camera.linear() * PixelRay(u, static_cast<int>(v));

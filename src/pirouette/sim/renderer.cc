@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -39,6 +41,11 @@ constexpr double kFar = 100.0;
 constexpr int kFloorTextureSize = 512;
 constexpr double kFloorTexelM = 0.003;  // the floor texture's grain
 constexpr int kWantedSamples = 4;       // MSAA samples for pass 1
+// Pass 1 is a pinhole image, which cannot reach 90° off the axis: a wide lens's
+// (rational_polynomial, equidistant) rays up to this angle are rendered, those
+// beyond it left black, as outside a fisheye's image circle. Pass 1 grows as
+// tan² of it: 80° keeps it under about 12 × 12 times the focal length.
+constexpr double kMaxPinholeAngleRad = 80.0 * std::numbers::pi / 180.0;
 
 constexpr const char* kSceneVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position;
@@ -114,7 +121,7 @@ float Uniform01(inout uint h) {  // in (0, 1]
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);  // p.y is the image row v (rows are not flipped)
   vec2 st = texelFetch(warp, p, 0).xy;
-  vec3 light = texture(scene, st).rgb;
+  vec3 light = st.x < 0.0 ? vec3(0.0) : texture(scene, st).rgb;  // s < 0: sees nothing
   vec2 d = vec2(p) - principal_point;
   float rho2 = dot(d, d) * inv_r_max_squared;
   light /= vec3(1.0) + vignetting_k * rho2;
@@ -183,15 +190,31 @@ struct Frustum {
   double x_min, x_max, y_min, y_max;
 };
 
-Frustum CoveringFrustum(const camera::CameraModel& camera, std::vector<Eigen::Vector2d>* rays) {
+// Where pixel (u, v)'s ray meets pass 1's image plane (z = 1); nullopt for a
+// wide lens's pixel that sees nothing or lies beyond kMaxPinholeAngleRad.
+// plumb_bob's pixels all have one, from CameraModel::Undistort.
+std::optional<Eigen::Vector2d> PinholePoint(const camera::CameraModel& camera, int u, int v) {
+  const auto& k = camera.intrinsics();
+  if (camera.distortion().model == camera::Distortion::Model::kPlumbBob) {
+    return camera.Undistort({(u - k.cx) / k.fx, (v - k.cy) / k.fy});
+  }
+  const std::optional<Eigen::Vector3d> ray = camera.SeenRay(Eigen::Vector2d(u, v));
+  if (!ray || !(ray->z() > std::cos(kMaxPinholeAngleRad))) return std::nullopt;
+  return Eigen::Vector2d(ray->x() / ray->z(), ray->y() / ray->z());
+}
+
+Frustum CoveringFrustum(const camera::CameraModel& camera,
+                        std::vector<std::optional<Eigen::Vector2d>>* rays) {
   const auto& k = camera.intrinsics();
   Frustum f{std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
             std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest()};
   rays->resize(static_cast<std::size_t>(camera.width()) * camera.height());
   for (int v = 0; v < camera.height(); ++v) {
     for (int u = 0; u < camera.width(); ++u) {
-      const Eigen::Vector2d n = camera.Undistort({(u - k.cx) / k.fx, (v - k.cy) / k.fy});
-      (*rays)[static_cast<std::size_t>(v) * camera.width() + u] = n;
+      const std::optional<Eigen::Vector2d> point = PinholePoint(camera, u, v);
+      (*rays)[static_cast<std::size_t>(v) * camera.width() + u] = point;
+      if (!point) continue;
+      const Eigen::Vector2d& n = *point;
       f.x_min = std::min(f.x_min, n.x());
       f.x_max = std::max(f.x_max, n.x());
       f.y_min = std::min(f.y_min, n.y());
@@ -261,7 +284,7 @@ struct Renderer::Impl {
     height = camera.height();
     robot_T_camera =
         camera.robot_T_camera() * Eigen::AngleAxisd(options.roll_rad, Eigen::Vector3d::UnitZ());
-    std::vector<Eigen::Vector2d> rays;
+    std::vector<std::optional<Eigen::Vector2d>> rays;
     const Frustum frustum = CoveringFrustum(camera, &rays);
     projection = FrustumProjection(frustum);
     // Pass 1 samples the centre of the image at least as finely as the camera.
@@ -378,11 +401,13 @@ struct Renderer::Impl {
     CheckFramebuffer("the camera image");
   }
 
-  void UploadWarp(const Frustum& f, const std::vector<Eigen::Vector2d>& rays) {
-    std::vector<float> st(rays.size() * 2);
+  // A pixel that sees nothing gets s = -1: the warp pass makes it black.
+  void UploadWarp(const Frustum& f, const std::vector<std::optional<Eigen::Vector2d>>& rays) {
+    std::vector<float> st(rays.size() * 2, -1.0f);
     for (std::size_t i = 0; i < rays.size(); ++i) {
-      st[2 * i] = static_cast<float>((rays[i].x() - f.x_min) / (f.x_max - f.x_min));
-      st[2 * i + 1] = static_cast<float>((f.y_max - rays[i].y()) / (f.y_max - f.y_min));
+      if (!rays[i]) continue;
+      st[2 * i] = static_cast<float>((rays[i]->x() - f.x_min) / (f.x_max - f.x_min));
+      st[2 * i + 1] = static_cast<float>((f.y_max - rays[i]->y()) / (f.y_max - f.y_min));
     }
     glGenTextures(1, &warp_texture);
     glBindTexture(GL_TEXTURE_2D, warp_texture);

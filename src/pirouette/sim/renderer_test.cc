@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "pirouette/core/angle.h"
@@ -96,6 +97,100 @@ TEST(RendererTest, BoxBottomEdgeLiesWhereTheCameraModelProjectsIt) {
     ++checked;
   }
   EXPECT_GT(checked, 100);
+}
+
+// A fisheye (equidistant) of about 150° across and a wide-angle lens
+// (rational_polynomial), 0.11 m up and tilted 30° down as the paper's.
+camera::CameraModel FisheyeCamera() {
+  const std::vector<double> k = {0.04, -0.012, 0.003, -0.0005};
+  return camera::CameraModel(
+      "fisheye", 320, 240, {117.0, 117.0, 159.5, 119.5},
+      *camera::Distortion::FromCoefficients(camera::Distortion::Model::kEquidistant, k),
+      {0.11, core::DegToRad(30.0), 0.03}, {});
+}
+
+camera::CameraModel WideAngleCamera() {
+  const std::vector<double> k = {0.1, 0.01, 0.001, -0.0008, 0.0005, 0.45, 0.02, 0.0001};
+  return camera::CameraModel(
+      "wide", 320, 240, {208.0, 208.0, 159.5, 119.5},
+      *camera::Distortion::FromCoefficients(camera::Distortion::Model::kRationalPolynomial, k),
+      {0.11, core::DegToRad(30.0), 0.03}, {});
+}
+
+class WideLensRendererTest : public ::testing::TestWithParam<camera::CameraModel (*)()> {};
+
+// Rendered, a box's bottom edge lies where the model projects it; the inverse
+// perspective map takes the rendered edge back to the edge on the floor, and
+// every floor point on it projects and back-projects to itself.
+TEST_P(WideLensRendererTest, BoxBottomEdgeProjectsAndBackProjectsToItself) {
+  const camera::CameraModel camera = GetParam()();
+  const Vector2d robot_xy(1.5, 1.5);
+  const double yaw = core::DegToRad(12.0);
+  const Solid box = MakeBox(robot_xy + Vector2d(0.30, 0.0), Vector2d(0.10, 0.70), yaw, 0.08,
+                            core::Rgb{220, 30, 30});
+  const World world = MakeWorld({3.0, 3.0}, core::Rgb{25, 25, 25}, {box}, camera);
+  RenderOptions options;
+  options.noise_sigma = 0.0;
+  Renderer renderer(world, camera, options);
+  const core::Pose2 world_T_robot(robot_xy.x(), robot_xy.y(), 0.0);
+  const core::ImageRgb8 image = renderer.Render(world_T_robot);
+
+  const Vector2d normal_2d(-std::cos(yaw), -std::sin(yaw));
+  const Vector2d along(-std::sin(yaw), std::cos(yaw));
+  const Vector2d face_centre = robot_xy + Vector2d(0.30, 0.0) + 0.05 * normal_2d;
+  const double face_red = 220.0 * Shade(world.light(), Vector3d(normal_2d.x(), normal_2d.y(), 0));
+  const double floor_red = 25.0 * Shade(world.light(), Vector3d::UnitZ());
+  const Vector2d face_robot = world_T_robot.Inverse() * face_centre;
+  const Vector2d along_robot = along;  // the robot faces the world's +x
+
+  const Eigen::Isometry3d camera_T_robot = camera.robot_T_camera().inverse();
+  std::vector<Vector2d> curve;
+  for (double s = -0.34; s <= 0.34; s += 0.0005) {
+    const Vector2d p_robot = face_robot + s * along_robot;
+    const auto pixel = camera.Project(camera_T_robot * Vector3d(p_robot.x(), p_robot.y(), 0.0));
+    ASSERT_TRUE(pixel.has_value());
+    const std::optional<Vector2d> back = camera.FloorPoint(*pixel);
+    ASSERT_TRUE(back.has_value()) << pixel->transpose();
+    EXPECT_NEAR((*back - p_robot).norm(), 0.0, 1e-9) << pixel->transpose();
+    curve.push_back(*pixel);
+  }
+  int checked = 0;
+  for (std::size_t i = 0; i + 1 < curve.size(); ++i) {
+    const Vector2d a = curve[i];
+    const Vector2d b = curve[i + 1];
+    const double u = std::ceil(std::min(a.x(), b.x()));
+    if (u > std::max(a.x(), b.x()) || u < 2 || u >= camera.width() - 2) continue;
+    const double expected_v = a.y() + (b.y() - a.y()) * (u - a.x()) / (b.x() - a.x());
+    const auto row = CrossingRow(image, static_cast<int>(u), 0.5 * (face_red + floor_red));
+    ASSERT_TRUE(row.has_value()) << "no edge in column " << u;
+    EXPECT_NEAR(*row, expected_v, 1.0) << "column " << u;
+    // The rendered edge's floor point lies on the edge, within a pixel's reach.
+    const std::optional<Vector2d> floor = camera.FloorPoint({u, *row});
+    ASSERT_TRUE(floor.has_value());
+    const Vector2d offset = *floor - face_robot;
+    EXPECT_NEAR(offset.x() * along_robot.y() - offset.y() * along_robot.x(), 0.0, 0.01)
+        << "column " << u;
+    ++checked;
+  }
+  EXPECT_GT(checked, 150);
+}
+
+INSTANTIATE_TEST_SUITE_P(Lenses, WideLensRendererTest,
+                         ::testing::Values(&FisheyeCamera, &WideAngleCamera));
+
+TEST(RendererTest, AFisheyesCornersBeyondItsImageCircleAreBlack) {
+  const camera::CameraModel camera = FisheyeCamera();
+  const World world = MakeWorld({30.0, 30.0}, core::Rgb{200, 200, 200}, {}, camera);
+  RenderOptions options;
+  options.noise_sigma = 0.0;
+  Renderer renderer(world, camera, options);
+  const core::ImageRgb8 image = renderer.Render(core::Pose2(15.0, 15.0, 0.0));
+  // The bottom corners' rays lie about 90° off the axis: not rendered.
+  EXPECT_FALSE(camera.SeenRay({0.0, 239.0}).has_value() &&
+               camera.SeenRay({0.0, 239.0})->z() > std::cos(core::DegToRad(80.0)));
+  EXPECT_EQ(image.At(0, 239).r, 0);
+  // The floor straight below the centre is seen.
+  EXPECT_GT(image.At(160, 200).r, 100);
 }
 
 TEST(RendererTest, FloorHasTheFloorsColourWithinTheNoise) {

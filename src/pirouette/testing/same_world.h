@@ -21,8 +21,7 @@ inline ::testing::AssertionResult SameCamera(const camera::CameraModel& a,
   const auto& db = b.distortion();
   const bool same =
       a.name() == b.name() && a.width() == b.width() && a.height() == b.height() &&
-      ia.fx == ib.fx && ia.fy == ib.fy && ia.cx == ib.cx && ia.cy == ib.cy && da.k1 == db.k1 &&
-      da.k2 == db.k2 && da.p1 == db.p1 && da.p2 == db.p2 && da.k3 == db.k3 &&
+      ia.fx == ib.fx && ia.fy == ib.fy && ia.cx == ib.cx && ia.cy == ib.cy && da == db &&
       a.mount().height_m == b.mount().height_m && a.mount().tilt_rad == b.mount().tilt_rad &&
       a.mount().forward_m == b.mount().forward_m && a.vignetting().k == b.vignetting().k;
   if (same) return ::testing::AssertionSuccess();

@@ -143,6 +143,12 @@ cv::Size CheckIntrinsicsRequest(const IntrinsicsCalibrationRequest& request) {
     throw core::InputError("--k-coefficients", 0, "",
                            fmt::format("expected 2 or 3, got {}", request.radial_coefficients));
   }
+  if (!camera::ModelNamed(request.model)) {
+    throw core::InputError(
+        "--model", 0, "",
+        fmt::format("expected plumb_bob, rational_polynomial or equidistant, got '{}'",
+                    request.model));
+  }
   return pattern;
 }
 
@@ -232,10 +238,10 @@ camera::Intrinsics RoundedIntrinsics(const camera::Intrinsics& k) {
           RoundTo(k.cx, kPixelDecimals), RoundTo(k.cy, kPixelDecimals)};
 }
 
-camera::PlumbBob RoundedDistortion(const camera::PlumbBob& d) {
-  return {RoundTo(d.k1, kDistortionDecimals), RoundTo(d.k2, kDistortionDecimals),
-          RoundTo(d.p1, kDistortionDecimals), RoundTo(d.p2, kDistortionDecimals),
-          RoundTo(d.k3, kDistortionDecimals)};
+camera::Distortion RoundedDistortion(const camera::Distortion& d) {
+  std::vector<double> coefficients = d.Coefficients();
+  for (double& c : coefficients) c = RoundTo(c, kDistortionDecimals);
+  return *camera::Distortion::FromCoefficients(d.model, coefficients);
 }
 
 // The notes on a calibration that worked but may not be reliable.
@@ -267,7 +273,7 @@ nlohmann::ordered_json ViewErrorsJson(const std::vector<vision::ViewError>& view
 std::string IntrinsicsJson(const IntrinsicsCalibrationRequest& request, const BoardViews& found,
                            const vision::IntrinsicsCalibration& calibration) {
   const camera::Intrinsics k = RoundedIntrinsics(calibration.intrinsics);
-  const camera::PlumbBob d = RoundedDistortion(calibration.distortion);
+  const camera::Distortion d = RoundedDistortion(calibration.distortion);
   nlohmann::ordered_json json;
   json["views_used"] = calibration.used.size();
   json["views_skipped"] = found.skipped;
@@ -277,7 +283,8 @@ std::string IntrinsicsJson(const IntrinsicsCalibrationRequest& request, const Bo
   json["fy"] = k.fy;
   json["cx"] = k.cx;
   json["cy"] = k.cy;
-  json["distortion"] = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  json["distortion_model"] = camera::ModelName(d.model);
+  json["distortion"] = d.Coefficients();
   json["image_width"] = found.image_size.width;
   json["image_height"] = found.image_size.height;
   json["views"] = ViewErrorsJson(calibration.used);
@@ -372,6 +379,7 @@ CalibrationReport CalibrateIntrinsics(const IntrinsicsCalibrationRequest& reques
   options.pattern = pattern;
   options.square_m = request.square_m;
   options.radial_coefficients = request.radial_coefficients;
+  options.model = *camera::ModelNamed(request.model);
   const vision::IntrinsicsCalibration calibration =
       vision::CalibrateIntrinsics(found.views, found.image_size, options);
   for (const vision::ViewError& view : calibration.dropped) {

@@ -18,7 +18,10 @@ struct IntrinsicsCalibrationRequest {
   // The camera file's camera_name when out_path does not exist yet (an
   // existing file keeps its name, mount and vignetting).
   std::string camera_name = "camera";
-  int radial_coefficients = 2;  // 2: k1, k2 (k3 = 0); 3: k1, k2, k3
+  int radial_coefficients = 2;  // plumb_bob's: 2: k1, k2 (k3 = 0); 3: k1, k2, k3
+  // The distortion model: plumb_bob, rational_polynomial (wide angle) or
+  // equidistant (fisheye), as ROS's camera_info names them.
+  std::string model = "plumb_bob";
 };
 
 // `pirouette calibrate vignetting`: vignetting.k of the camera file fitted to

@@ -23,18 +23,37 @@ Solution Solve(const std::vector<const ChessboardView*>& views, cv::Size image_s
   std::vector<std::vector<cv::Point2f>> image_points;
   image_points.reserve(views.size());
   for (const ChessboardView* view : views) image_points.push_back(view->corners);
-  int flags = 0;
-  if (options.radial_coefficients == 2) flags |= cv::CALIB_FIX_K3;
+  const cv::TermCriteria criteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-12);
+  const bool fisheye = options.model == camera::Distortion::Model::kEquidistant;
   Solution s;
   std::vector<cv::Mat> rvecs;
   std::vector<cv::Mat> tvecs;
-  s.distortion = cv::Mat::zeros(1, 5, CV_64F);
-  s.rms_px = cv::calibrateCamera(
-      object_points, image_points, image_size, s.camera_matrix, s.distortion, rvecs, tvecs, flags,
-      cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-12));
+  if (fisheye) {
+    s.distortion = cv::Mat::zeros(1, 4, CV_64F);
+    s.camera_matrix = cv::Mat::eye(3, 3, CV_64F);
+    s.rms_px = cv::fisheye::calibrate(
+        object_points, image_points, image_size, s.camera_matrix, s.distortion, rvecs, tvecs,
+        cv::fisheye::CALIB_RECOMPUTE_EXTRINSIC | cv::fisheye::CALIB_FIX_SKEW, criteria);
+  } else {
+    int flags = 0;
+    if (options.model == camera::Distortion::Model::kRationalPolynomial) {
+      flags |= cv::CALIB_RATIONAL_MODEL;
+      s.distortion = cv::Mat::zeros(1, 8, CV_64F);
+    } else {
+      if (options.radial_coefficients == 2) flags |= cv::CALIB_FIX_K3;
+      s.distortion = cv::Mat::zeros(1, 5, CV_64F);
+    }
+    s.rms_px = cv::calibrateCamera(object_points, image_points, image_size, s.camera_matrix,
+                                   s.distortion, rvecs, tvecs, flags, criteria);
+  }
   for (std::size_t i = 0; i < views.size(); ++i) {
     std::vector<cv::Point2f> projected;
-    cv::projectPoints(board, rvecs[i], tvecs[i], s.camera_matrix, s.distortion, projected);
+    if (fisheye) {
+      cv::fisheye::projectPoints(board, projected, rvecs[i], tvecs[i], s.camera_matrix,
+                                 s.distortion);
+    } else {
+      cv::projectPoints(board, rvecs[i], tvecs[i], s.camera_matrix, s.distortion, projected);
+    }
     double sum = 0.0;
     for (std::size_t j = 0; j < projected.size(); ++j) {
       const cv::Point2f d = projected[j] - image_points[i][j];
@@ -120,9 +139,17 @@ IntrinsicsCalibration CalibrateIntrinsics(const std::vector<ChessboardView>& vie
   result.intrinsics = {k.at<double>(0, 0), k.at<double>(1, 1), k.at<double>(0, 2),
                        k.at<double>(1, 2)};
   const cv::Mat d = s.distortion.reshape(1, 1);
-  const auto coefficient = [&d](int i) { return i < d.cols ? d.at<double>(0, i) : 0.0; };
-  result.distortion = {coefficient(0), coefficient(1), coefficient(2), coefficient(3),
-                       coefficient(4)};
+  // OpenCV may return more coefficients than the model has (with zeros for
+  // the thin prism and tilt terms it did not fit): the model's come first.
+  std::vector<double> coefficients(d.begin<double>(), d.end<double>());
+  camera::Distortion of_model;
+  of_model.model = options.model;
+  const std::size_t count = of_model.Coefficients().size();
+  if (coefficients.size() < count) {
+    throw std::logic_error("CalibrateIntrinsics: too few coefficients");
+  }
+  coefficients.resize(count);
+  result.distortion = *camera::Distortion::FromCoefficients(options.model, coefficients);
   result.rms_px = s.rms_px;
   for (std::size_t i = 0; i < kept.size(); ++i) {
     result.used.push_back({kept[i]->name, s.view_rms_px[i]});

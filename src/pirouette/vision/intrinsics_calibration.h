@@ -18,8 +18,12 @@ struct ChessboardView {
 struct IntrinsicsCalibrationOptions {
   cv::Size pattern;       // inner corners (cols, rows)
   double square_m = 0.0;  // the side of one square, metres (> 0)
-  // Radial coefficients estimated: 2 (k1, k2; k3 held at 0, as ROS's
-  // camera_calibration does by default) or 3.
+  // The distortion model solved for: plumb_bob and rational_polynomial by
+  // cv::calibrateCamera (the latter with CALIB_RATIONAL_MODEL), equidistant
+  // by cv::fisheye::calibrate.
+  camera::Distortion::Model model = camera::Distortion::Model::kPlumbBob;
+  // plumb_bob's radial coefficients estimated: 2 (k1, k2; k3 held at 0, as
+  // ROS's camera_calibration does by default) or 3. The other models estimate all.
   int radial_coefficients = 2;
   // A view whose RMS reprojection error exceeds both outlier_factor times the
   // median view's and outlier_floor_px is dropped, and the camera solved again
@@ -35,7 +39,7 @@ struct ViewError {
 
 struct IntrinsicsCalibration {
   camera::Intrinsics intrinsics;
-  camera::PlumbBob distortion;
+  camera::Distortion distortion;
   double rms_px = 0.0;             // over every corner of the views used
   std::vector<ViewError> used;     // in the order given
   std::vector<ViewError> dropped;  // the outliers, with their error before they were dropped
@@ -46,13 +50,12 @@ struct IntrinsicsCalibration {
 inline constexpr int kMinCalibrationViews = 3;
 
 // Zhang's method (Zhang 2000, "A flexible new technique for camera
-// calibration") through cv::calibrateCamera: pinhole intrinsics (no skew) and
-// plumb_bob distortion from views of a planar chessboard in an image of
-// `image_size`. The board's planes must not all be parallel in the camera
-// frame (tilt it differently between photos). Outliers are dropped once (see
-// the options), keeping at least kMinCalibrationViews. Throws
-// std::invalid_argument for fewer views than that, views whose corner count
-// is not the pattern's, or bad options.
+// calibration") through cv::calibrateCamera (cv::fisheye::calibrate for
+// equidistant): pinhole intrinsics (no skew) and the options' distortion model from views of a
+// planar chessboard in an image of `image_size`. The board's planes must not all be parallel in the
+// camera frame (tilt it differently between photos). Outliers are dropped once (see the options),
+// keeping at least kMinCalibrationViews. Throws std::invalid_argument for fewer views than that,
+// views whose corner count is not the pattern's, or bad options.
 IntrinsicsCalibration CalibrateIntrinsics(const std::vector<ChessboardView>& views,
                                           cv::Size image_size,
                                           const IntrinsicsCalibrationOptions& options);

@@ -21,18 +21,33 @@ MountCalibration CalibrateMount(const std::vector<cv::Point2f>& corners,
   const std::vector<cv::Point3f> board = ChessboardObjectPoints(options.pattern, options.square_m);
   const camera::Intrinsics& k = camera.intrinsics();
   const cv::Matx33d camera_matrix(k.fx, 0.0, k.cx, 0.0, k.fy, k.cy, 0.0, 0.0, 1.0);
-  const camera::PlumbBob& d = camera.distortion();
-  const cv::Matx<double, 1, 5> distortion(d.k1, d.k2, d.p1, d.p2, d.k3);
+  const camera::Distortion& d = camera.distortion();
+  const std::vector<double> coefficients = d.Coefficients();
+  const cv::Mat model_distortion = cv::Mat(coefficients, true).reshape(1, 1);
+  const bool fisheye = d.model == camera::Distortion::Model::kEquidistant;
+  // solvePnP has no fisheye model: a fisheye's corners are first moved to
+  // where an ideal pinhole camera with the same matrix would see them.
+  std::vector<cv::Point2f> pinhole_corners = corners;
+  cv::Mat distortion = model_distortion;
+  if (fisheye) {
+    cv::fisheye::undistortPoints(corners, pinhole_corners, camera_matrix, model_distortion,
+                                 cv::noArray(), camera_matrix);
+    distortion = cv::Mat();
+  }
   cv::Mat rvec;
   cv::Mat tvec;
-  if (!cv::solvePnP(board, corners, camera_matrix, distortion, rvec, tvec, false,
+  if (!cv::solvePnP(board, pinhole_corners, camera_matrix, distortion, rvec, tvec, false,
                     cv::SOLVEPNP_IPPE)) {
     throw std::invalid_argument("CalibrateMount: no pose of the board fits its corners");
   }
-  cv::solvePnPRefineLM(board, corners, camera_matrix, distortion, rvec, tvec);
+  cv::solvePnPRefineLM(board, pinhole_corners, camera_matrix, distortion, rvec, tvec);
 
   std::vector<cv::Point2f> projected;
-  cv::projectPoints(board, rvec, tvec, camera_matrix, distortion, projected);
+  if (fisheye) {
+    cv::fisheye::projectPoints(board, projected, rvec, tvec, camera_matrix, model_distortion);
+  } else {
+    cv::projectPoints(board, rvec, tvec, camera_matrix, distortion, projected);
+  }
   double sum = 0.0;
   for (std::size_t i = 0; i < projected.size(); ++i) {
     const cv::Point2f e = projected[i] - corners[i];

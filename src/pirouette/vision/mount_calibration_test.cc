@@ -59,6 +59,30 @@ TEST(MountCalibrationTest, RecoversHeightTiltAndForward) {
   }
 }
 
+TEST(MountCalibrationTest, RecoversTheMountThroughAWideLensOrAFisheye) {
+  using Model = camera::Distortion::Model;
+  const camera::Mount mount{0.11, core::DegToRad(30.0), 0.03};
+  const std::vector<camera::CameraModel> cameras = {
+      camera::CameraModel("wide", 320, 240, {208.0, 208.0, 159.5, 119.5},
+                          *camera::Distortion::FromCoefficients(
+                              Model::kRationalPolynomial,
+                              std::vector{0.1, 0.01, 0.001, -0.0008, 0.0005, 0.45, 0.02, 0.0001}),
+                          mount, {}),
+      camera::CameraModel("fisheye", 320, 240, {117.0, 117.0, 159.5, 119.5},
+                          *camera::Distortion::FromCoefficients(
+                              Model::kEquidistant, std::vector{0.04, -0.012, 0.003, -0.0005}),
+                          mount, {}),
+  };
+  for (const camera::CameraModel& camera : cameras) {
+    const MountCalibration m =
+        CalibrateMount(SeenCorners(camera, 0.30, 0.3, 0.0, 0.0), camera, Options(0.30));
+    EXPECT_NEAR(m.mount.height_m, 0.11, 1e-4) << camera.name();
+    EXPECT_NEAR(core::RadToDeg(m.mount.tilt_rad), 30.0, 0.01) << camera.name();
+    EXPECT_NEAR(m.mount.forward_m, 0.03, 1e-4) << camera.name();
+    EXPECT_LT(m.rms_px, 0.01) << camera.name();
+  }
+}
+
 TEST(MountCalibrationTest, NoisyCornersStayWithinAMillimetreAndATenthOfADegree) {
   const camera::CameraModel camera = testing::PaperCamera();
   const MountCalibration m =
