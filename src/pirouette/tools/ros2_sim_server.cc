@@ -35,13 +35,13 @@ void SetHeader(std_msgs_msg_dds__Header_& header, double time_s, const char* fra
   ros2::SetString(header.frame_id, frame);
 }
 
-// The camera model as ROS's camera_info has it (plumb_bob, no rectification).
+// The camera model as ROS's camera_info has it (its distortion model and
+// coefficients in ROS's order, no rectification).
 void SetCameraInfo(sensor_msgs_msg_dds__CameraInfo_& info, const camera::CameraModel& camera) {
   info.width = static_cast<std::uint32_t>(camera.width());
   info.height = static_cast<std::uint32_t>(camera.height());
-  ros2::SetString(info.distortion_model, "plumb_bob");
-  const camera::PlumbBob& d = camera.distortion();
-  const std::array<double, 5> coefficients = {d.k1, d.k2, d.p1, d.p2, d.k3};
+  ros2::SetString(info.distortion_model, camera::ModelName(camera.distortion().model));
+  const std::vector<double> coefficients = camera.distortion().Coefficients();
   ros2::SetSequence(info.d, std::span<const double>(coefficients));
   const camera::Intrinsics& k = camera.intrinsics();
   const std::array<double, 9> matrix = {k.fx, 0.0, k.cx, 0.0, k.fy, k.cy, 0.0, 0.0, 1.0};
