@@ -32,22 +32,19 @@ std::string World(const std::string& name) {
   return std::string(PIROUETTE_WORLDS_DIR) + "/" + name + ".yaml";
 }
 
-// `pirouette sim-serve --ros2` in the background in DDS domain `domain`;
-// stopped (SIGINT, as Ctrl-C) when the object goes unless killed first.
-class SimServeRos2 {
+// A program in the background; stopped (SIGINT, as Ctrl-C) when the object
+// goes unless stopped first.
+class Background {
  public:
-  SimServeRos2(const std::string& world, int domain, const std::string& ros_namespace) {
-    ::setenv("ROS_DOMAIN_ID", std::to_string(domain).c_str(), 1);
-    std::vector<std::string> args = {PIROUETTE_BINARY, "sim-serve",       "--world",    world,
-                                     "--ros2",         "--ros-namespace", ros_namespace};
+  explicit Background(std::vector<std::string> args) {
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    if (posix_spawn(&pid_, PIROUETTE_BINARY, nullptr, nullptr, argv.data(), environ) != 0) pid_ = 0;
+    if (posix_spawn(&pid_, argv[0], nullptr, nullptr, argv.data(), environ) != 0) pid_ = 0;
   }
-  ~SimServeRos2() { Stop(SIGINT); }
-  SimServeRos2(const SimServeRos2&) = delete;
-  SimServeRos2& operator=(const SimServeRos2&) = delete;
+  ~Background() { Stop(SIGINT); }
+  Background(const Background&) = delete;
+  Background& operator=(const Background&) = delete;
 
   bool started() const { return pid_ > 0; }
   // Sends `signal` and waits for the process; its exit status.
@@ -62,6 +59,16 @@ class SimServeRos2 {
 
  private:
   pid_t pid_ = 0;
+};
+
+// `pirouette sim-serve --ros2` in DDS domain `domain` (set for the
+// processes this test starts after it, too).
+class SimServeRos2 : public Background {
+ public:
+  SimServeRos2(const std::string& world, int domain, const std::string& ros_namespace)
+      : Background((::setenv("ROS_DOMAIN_ID", std::to_string(domain).c_str(), 1),
+                    std::vector<std::string>{PIROUETTE_BINARY, "sim-serve", "--world", world,
+                                             "--ros2", "--ros-namespace", ros_namespace})) {}
 };
 
 nlohmann::json RunJson(const testing::TempDir& dir) {
@@ -87,6 +94,37 @@ TEST(Ros2Robot, TheSimulatorServedOverDdsIsExploredToComplete) {
   // sim-serve stops on Ctrl-C with exit code 0.
   const int status = server.Stop(SIGINT);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+}
+
+// The independent check: a ROS 2 robot on Fast DDS that pirouette's DDS
+// layer had no part in (tests/fastdds/ros2_fake_robot: bgr8 images, reliable
+// odometry, its body the simulator over the line protocol) is explored to
+// complete.
+TEST(Ros2Robot, AFastDdsRobotIsExploredToComplete) {
+  const testing::TempDir dir("ros2_fastdds_robot");
+  constexpr int kDomain = 67;
+  const std::string port_file = dir / "port";
+  Background simulator({PIROUETTE_BINARY, "sim-serve", "--world", World("soccer_field"), "--port",
+                        "0", "--port-file", port_file});
+  ASSERT_TRUE(simulator.started());
+  for (int i = 0; i < 600 && !fs::exists(port_file); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::string port = dir.Read("port");
+  while (!port.empty() && (port.back() == '\n' || port.back() == '\r')) port.pop_back();
+  ASSERT_FALSE(port.empty()) << "sim-serve did not start";
+  Background robot({ROS2_FAKE_ROBOT, std::to_string(kDomain), "fastdds", "127.0.0.1", port, "600"});
+  ASSERT_TRUE(robot.started());
+  ::setenv("ROS_DOMAIN_ID", std::to_string(kDomain).c_str(), 1);
+  const testing::RunResult run =
+      RunPirouette("explore --robot ros2 --ros-namespace fastdds --world " + World("soccer_field") +
+                   " --out " + (dir / "out") + " --quiet --localize none");
+  ::unsetenv("ROS_DOMAIN_ID");
+  ASSERT_EQ(run.exit_code, 0) << run.output();
+  const nlohmann::json result = RunJson(dir);
+  EXPECT_EQ(result["status"], "complete");
+  EXPECT_GE(result["eval"]["coverage"].get<double>(), 0.95) << result.dump(2);
+  EXPECT_LE(result["eval"]["false_free"].get<double>(), 0.005) << result.dump(2);
 }
 
 TEST(Ros2Robot, NoRobotOnTheDomainIsAClearFailureAndLeavesNothing) {
