@@ -51,6 +51,8 @@ void ServeRos2(const SimServeRequest& request, const sim::World& world,
                  server.Describe().c_str(), request.world_path.c_str(),
                  static_cast<unsigned long long>(request.seed));
     server.Serve();
+    std::fprintf(stderr, "sim-serve: %.1f s of simulated time, %ld steps, %d frames published\n",
+                 server.robot().time_s(), server.steps(), server.frames_published());
   } catch (const robot::ros2::DdsError& e) {
     throw std::runtime_error(std::string("sim-serve: DDS: ") + e.what());
   }

@@ -92,6 +92,7 @@ struct Ros2SimServer::Impl {
     }
     if (robot.time_s() - last_command_s > options.command_timeout_s) linear = angular = 0.0;
     robot.Step(linear, angular, options.step_s);
+    ++steps;
     PublishMotion();
     if (robot.still_s() >= options.step_s &&
         (!last_frame_s || robot.time_s() - *last_frame_s >= options.frame_period_s - 1e-9)) {
@@ -161,6 +162,7 @@ struct Ros2SimServer::Impl {
   std::optional<core::Pose2> rendered_at;
   core::ImageRgb8 image;
   int frames = 0;
+  long steps = 0;
 };
 
 Ros2SimServer::Ros2SimServer(const sim::World& world, std::uint64_t seed,
@@ -181,6 +183,7 @@ void Ros2SimServer::Step(std::chrono::milliseconds wait) { impl_->Step(wait); }
 
 const sim::VelocityRobot& Ros2SimServer::robot() const { return impl_->robot; }
 int Ros2SimServer::frames_published() const { return impl_->frames; }
+long Ros2SimServer::steps() const { return impl_->steps; }
 
 std::string Ros2SimServer::Describe() const {
   const ros2::DdsParticipant& p = impl_->participant;

@@ -61,6 +61,8 @@ class Ros2SimServer {
 
   const sim::VelocityRobot& robot() const;
   int frames_published() const;
+  // Steps made (each published odom, tf and clock).
+  long steps() const;
   // "rt/NS/odom"-style names, for the start-up message.
   std::string Describe() const;
 
