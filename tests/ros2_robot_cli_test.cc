@@ -127,6 +127,26 @@ TEST(Ros2Robot, AFastDdsRobotIsExploredToComplete) {
   EXPECT_LE(result["eval"]["false_free"].get<double>(), 0.005) << result.dump(2);
 }
 
+// Malformed samples from the network: thousands of random byte strings,
+// from empty to 64 kB, typed as ROS 2's Odometry and Image on the wire
+// (tests/fastdds/ros2_junk_publisher). pirouette neither crashes nor takes
+// them for a robot: it ends with its usual failure, naming the topic.
+TEST(Ros2Robot, JunkUnderRos2NamesNeverCrashesIt) {
+  const testing::TempDir dir("ros2_junk");
+  constexpr int kDomain = 68;
+  Background junk({ROS2_JUNK_PUBLISHER, std::to_string(kDomain), "junk", "8", "7"});
+  ASSERT_TRUE(junk.started());
+  ::setenv("ROS_DOMAIN_ID", std::to_string(kDomain).c_str(), 1);
+  const testing::RunResult run =
+      RunPirouette("explore --robot ros2 --ros-namespace junk --world " + World("soccer_field") +
+                   " --out " + (dir / "out") + " --quiet --robot-timeout 4");
+  ::unsetenv("ROS_DOMAIN_ID");
+  EXPECT_EQ(run.exit_code, 1) << run.output();
+  EXPECT_NE(run.stderr_only.find("rt/junk/"), std::string::npos) << run.output();
+  const int status = junk.Stop(SIGINT);
+  EXPECT_TRUE(WIFEXITED(status) || WIFSIGNALED(status));
+}
+
 TEST(Ros2Robot, NoRobotOnTheDomainIsAClearFailureAndLeavesNothing) {
   const testing::TempDir dir("ros2_robot_none");
   ::setenv("ROS_DOMAIN_ID", "65", 1);

@@ -114,6 +114,10 @@ std::string RosTopicName(std::string_view ros_namespace, std::string_view relati
 DdsParticipant::DdsParticipant(int domain_id, const DdsNetwork& network, std::string ros_namespace)
     : domain_id_(domain_id), ros_namespace_(std::move(ros_namespace)) {
   if (!ros_namespace_.empty()) CheckRosName(TrimSlashes(ros_namespace_), "ROS namespace");
+  // Cyclone's errors only: it warns on standard error for every sample that
+  // does not decode (junk under a ROS 2 name floods the terminal with one
+  // line per sample); such samples are dropped whatever the log says.
+  dds_set_log_mask(DDS_LC_FATAL | DDS_LC_ERROR);
   const std::string config = CycloneConfigFor(network);
   if (!config.empty()) {
     DomainTable& table = Domains();
