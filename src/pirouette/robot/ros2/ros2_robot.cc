@@ -336,4 +336,20 @@ void Ros2Robot::Halt() { impl_->Halt(); }
 std::optional<CameraInfo> Ros2Robot::camera_info() const { return impl_->camera_info; }
 std::string Ros2Robot::Describe() const { return impl_->Describe(); }
 
+std::optional<CameraInfo> Ros2Robot::WaitForCameraInfo(std::chrono::milliseconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  impl_->TakeCameraInfo();
+  while (!impl_->camera_info && Clock::now() < deadline) impl_->Spin();
+  return impl_->camera_info;
+}
+
+void Ros2Robot::SetFrameSize(int width, int height) {
+  impl_->options.frame_width = width;
+  impl_->options.frame_height = height;
+}
+
+std::string Ros2Robot::TopicName(std::string_view relative) const {
+  return impl_->participant.TopicName(relative);
+}
+
 }  // namespace pirouette::robot::ros2

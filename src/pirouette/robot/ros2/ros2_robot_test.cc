@@ -164,7 +164,8 @@ class FakeBase {
     for (int v = 0; v < h; ++v) {
       for (int u = 0; u < w; ++u) {
         const core::Rgb c = PixelColour(u, v);
-        std::uint8_t* p = data.data() + static_cast<std::size_t>(v) * step + 3 * u;
+        std::uint8_t* p =
+            data.data() + static_cast<std::size_t>(v) * step + static_cast<std::size_t>(3 * u);
         p[0] = bgr ? c.b : c.r;
         p[1] = c.g;
         p[2] = bgr ? c.r : c.b;
