@@ -107,7 +107,7 @@ camera::CameraModel CameraOfRos2Robot(robot::ros2::Ros2Robot& robot,
   const std::optional<robot::ros2::CameraInfo> info = robot.WaitForCameraInfo(timeout);
   const auto fail = [&](const std::string& what) -> robot::RobotError {
     robot.Halt();
-    return robot::RobotError(fmt::format("the ROS 2 robot ({}): {}", robot.Describe(), what));
+    return robot::RobotError{fmt::format("the ROS 2 robot ({}): {}", robot.Describe(), what)};
   };
   if (!info) {
     throw fail(fmt::format(
@@ -122,8 +122,9 @@ camera::CameraModel CameraOfRos2Robot(robot::ros2::Ros2Robot& robot,
                                               file.width, file.height, topic, info->width,
                                               info->height));
     }
-    if (!built.warning.empty())
+    if (!built.warning.empty()) {
       notes.push_back(fmt::format("{}: warning: {}", topic, built.warning));
+    }
     notes.push_back(fmt::format("intrinsics from {} ({}×{}, {}); the mount from {}", topic,
                                 info->width, info->height,
                                 camera::ModelName(built.camera.distortion().model), path));

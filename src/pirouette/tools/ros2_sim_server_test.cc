@@ -9,9 +9,12 @@
 #include <thread>
 #include <vector>
 
+#include "pirouette/io/camera_file.h"
 #include "pirouette/io/world_file.h"
 #include "pirouette/robot/ros2/ros2_robot.h"
+#include "pirouette/run/explore_job.h"
 #include "pirouette/run/ros2_camera.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::tools::ros2_sim_server_test {
 namespace {
@@ -20,6 +23,7 @@ namespace {
 constexpr int kDomainMoves = 174;
 constexpr int kDomainContact = 175;
 constexpr int kDomainCameraInfo = 191;
+constexpr int kDomainExploreMount = 192;
 
 // The simulator served on a thread for the life of the object (built on it
 // too: the renderer's OpenGL context belongs to the thread that made it).
@@ -140,6 +144,33 @@ TEST(Ros2SimServerTest, CameraInfoGivesTheWorldsIntrinsicsToAMountOnlyCameraFile
   // Frames are now held to camera_info's size, and have it.
   const robot::Frame frame = robot.Capture();
   EXPECT_EQ(frame.image.width(), truth.width());
+}
+
+// `explore --robot ros2 --camera mount.yaml`: the run's camera has the
+// intrinsics of the robot's camera_info and the file's mount.
+TEST(Ros2SimServerTest, ExploreWithAMountOnlyCameraFileTakesCameraInfosIntrinsics) {
+  const sim::World world =
+      io::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
+  Serving serving(world, kDomainExploreMount);
+  const testing::TempDir dir;
+  run::ExploreRequest request;
+  request.robot_url = run::kRos2Robot;
+  request.ros2_publish = run::Ros2PublishOptions{kDomainExploreMount, {}, ""};
+  request.camera_path = dir.Write("mount.yaml",
+                                  "mount: {height: 0.11, tilt: 30, forward: 0.03}\n"
+                                  "vignetting: {k: [0.35, 0.30, 0.40]}\n");
+  request.radius_m = world.robot().radius;
+  request.out_dir = (dir.path() / "out").string();
+  request.quiet = true;
+  request.record_dir = (dir.path() / "log").string();
+  request.options.max_steps = 1;
+  const run::ExploreReport report = run::RunExplore(request);
+  EXPECT_EQ(report.run["status"], "step-limit") << report.run.dump(2);
+  // The run log records the run's camera: camera_info's intrinsics.
+  const camera::CameraModel logged = io::LoadCameraFile((dir.path() / "log/camera.yaml").string());
+  EXPECT_EQ(logged.intrinsics().fx, world.robot().camera.intrinsics().fx);
+  EXPECT_EQ(logged.distortion(), world.robot().camera.distortion());
+  EXPECT_EQ(logged.mount().height_m, 0.11);
 }
 
 }  // namespace
