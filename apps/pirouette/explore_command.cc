@@ -67,7 +67,9 @@ void AddRobotAndOutputOptions(CLI::App* cmd, run::ExploreRequest& request,
                   "domain ROS_DOMAIN_ID names, under --ros-namespace (docs/ros2.md; the run is "
                   "published as with --ros2-publish). `pirouette sim-serve [--ros2]` serves the "
                   "simulator either way");
-  AddCameraOption(cmd, request.camera_path, "the robot's camera (default: the world's)");
+  AddCameraOption(cmd, request.camera_path,
+                  "the robot's camera (default: the world's); with --robot ros2 it may hold only "
+                  "the mount, the intrinsics then coming from camera_info");
   AddRadiusOption(cmd, request.radius_m, "the world's robot");
   cmd->add_option("--robot-timeout", request.robot_timeout_s,
                   "seconds to wait for the robot's reply before giving up (the map so far is "

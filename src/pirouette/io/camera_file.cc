@@ -170,13 +170,22 @@ camera::Vignetting ReadVignetting(const std::string& file, const YamlMap& map) {
   return vignetting;
 }
 
+// The keys a camera file may have.
+const std::initializer_list<std::string_view> kCameraKeys = {"image_width",
+                                                             "image_height",
+                                                             "camera_name",
+                                                             "camera_matrix",
+                                                             "distortion_model",
+                                                             "distortion_coefficients",
+                                                             "rectification_matrix",
+                                                             "projection_matrix",
+                                                             "mount",
+                                                             "vignetting"};
+
 camera::CameraModel ParseCamera(const YAML::Node& node, const std::string& file,
                                 const std::string& prefix) {
   const YamlField root{node, prefix, LineOf(node)};
-  const YamlMap map = ReadMap(file, root,
-                              {"image_width", "image_height", "camera_name", "camera_matrix",
-                               "distortion_model", "distortion_coefficients",
-                               "rectification_matrix", "projection_matrix", "mount", "vignetting"});
+  const YamlMap map = ReadMap(file, root, kCameraKeys);
   const std::array<int, 2> size = ReadImageSize(file, map);
   std::string name;
   if (const auto field = map.Optional("camera_name")) name = ReadName(file, *field);
@@ -263,6 +272,37 @@ std::string CameraText(const camera::CameraModel& camera) {
 
 camera::CameraModel LoadCameraFile(const std::string& path) {
   return ParseCamera(LoadYamlFile(path), path, "");
+}
+
+CameraMountFile LoadCameraMount(const std::string& path) {
+  const YAML::Node node = LoadYamlFile(path);
+  const YamlMap map = ReadMap(path, YamlField{node, "", LineOf(node)}, kCameraKeys);
+  CameraMountFile result;
+  if (map.Optional("camera_matrix")) {
+    result.camera = ParseCamera(node, path, "");
+    result.name = result.camera->name();
+    result.mount = result.camera->mount();
+    result.vignetting = result.camera->vignetting();
+    result.width = result.camera->width();
+    result.height = result.camera->height();
+    return result;
+  }
+  for (const char* key : {"distortion_model", "distortion_coefficients"}) {
+    if (const auto field = map.Optional(key)) {
+      ThrowInputError(path, *field,
+                      "given without camera_matrix: give the whole calibration, or neither and "
+                      "let the robot's camera_info give the intrinsics");
+    }
+  }
+  if (map.Optional("image_width") || map.Optional("image_height")) {
+    const std::array<int, 2> size = ReadImageSize(path, map);
+    result.width = size[0];
+    result.height = size[1];
+  }
+  if (const auto field = map.Optional("camera_name")) result.name = ReadName(path, *field);
+  result.mount = ReadMount(path, map);
+  result.vignetting = ReadVignetting(path, map);
+  return result;
 }
 
 camera::CameraModel ParseCameraNode(const YAML::Node& node, const std::string& file,

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/angle.h"
@@ -26,6 +28,7 @@
 #include "pirouette/robot/remote_robot.h"
 #include "pirouette/robot/ros2/ros2_robot.h"
 #include "pirouette/run/progress_line.h"
+#include "pirouette/run/ros2_camera.h"
 #include "pirouette/run/simulated_exploration.h"
 #include "pirouette/sim/simulated_robot.h"
 #include "pirouette/vision/floor_segmenter.h"
@@ -144,43 +147,86 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
 
 namespace {
 
-// The robot's camera and size: the options', else the world's.
-RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* world) {
-  if (request.camera_path.empty() && world == nullptr) {
-    throw core::InputError("--camera", 0, "", "a robot without a world needs its camera file");
-  }
+// How long a run whose camera file has intrinsics listens for camera_info,
+// only to warn when its size is another: a driver sends it with every frame.
+constexpr std::chrono::milliseconds kCameraInfoPeek{1000};
+
+// The robot's radius: the options', else the world's.
+double RobotRadius(const ExploreRequest& request, const sim::World* world) {
   const double radius =
       request.radius_m > 0.0 ? request.radius_m : (world ? world->robot().radius : 0.0);
   if (!(radius > 0.0)) {
     throw core::InputError("--radius", 0, "", "a robot without a world needs its radius (metres)");
   }
+  return radius;
+}
+
+// The robot's camera and size: the options', else the world's.
+RobotDescription DescribeRobot(const ExploreRequest& request, const sim::World* world) {
+  if (request.camera_path.empty() && world == nullptr) {
+    throw core::InputError("--camera", 0, "", "a robot without a world needs its camera file");
+  }
+  const double radius = RobotRadius(request, world);
   return RobotDescription{
       request.camera_path.empty() ? world->robot().camera : io::LoadCameraFile(request.camera_path),
       radius};
+}
+
+void CheckRobotMethod(const ExploreRequest& request) {
+  if (request.options.method == vision::MaskSource::kTruth) {
+    throw core::InputError("--method", 0, "", "the truth is only known in the simulator");
+  }
+}
+
+std::chrono::milliseconds RobotTimeout(const ExploreRequest& request) {
+  return std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
+}
+
+// The ROS 2 robot of --robot ros2, its frames `width` × `height` (0: any).
+std::unique_ptr<robot::ros2::Ros2Robot> MakeRos2Robot(const ExploreRequest& request, int width,
+                                                      int height) {
+  robot::ros2::Ros2RobotOptions ros2;
+  const Ros2PublishOptions dds = request.ros2_publish.value_or(Ros2PublishOptions{});
+  ros2.domain_id = dds.domain_id;
+  ros2.network = dds.network;
+  ros2.ros_namespace = dds.ros_namespace;
+  ros2.frame_width = width;
+  ros2.frame_height = height;
+  ros2.stop_requested = request.options.stop_requested;
+  ros2.connect_timeout = std::min(ros2.connect_timeout, RobotTimeout(request));
+  return std::make_unique<robot::ros2::Ros2Robot>(ros2);
+}
+
+// Connects to the ROS 2 robot with a camera file that may leave the
+// intrinsics to its camera_info (the mount is always the file's), and
+// describes it; tells the user where the intrinsics came from.
+RobotDescription ConnectRos2Robot(const ExploreRequest& request, const sim::World* world,
+                                  std::unique_ptr<robot::Robot>& connected) {
+  const io::CameraMountFile file = io::LoadCameraMount(request.camera_path);
+  const double radius = RobotRadius(request, world);
+  CheckRobotMethod(request);
+  std::unique_ptr<robot::ros2::Ros2Robot> robot = MakeRos2Robot(
+      request, file.camera ? file.camera->width() : 0, file.camera ? file.camera->height() : 0);
+  std::vector<std::string> notes;
+  camera::CameraModel camera = CameraOfRos2Robot(*robot, file, request.camera_path,
+                                                 RobotTimeout(request), kCameraInfoPeek, notes);
+  if (!request.quiet) {
+    for (const std::string& note : notes) fmt::print(stderr, "explore: {}\n", note);
+  }
+  connected = std::move(robot);
+  return RobotDescription{std::move(camera), radius};
 }
 
 // Connects to the robot at request.robot_url (before any output is made,
 // so that a robot that is not there leaves nothing behind).
 std::unique_ptr<robot::Robot> ConnectRobot(const ExploreRequest& request,
                                            const RobotDescription& robot_info) {
-  if (request.options.method == vision::MaskSource::kTruth) {
-    throw core::InputError("--method", 0, "", "the truth is only known in the simulator");
-  }
+  CheckRobotMethod(request);
   if (request.robot_url == kRos2Robot) {
-    robot::ros2::Ros2RobotOptions ros2;
-    const Ros2PublishOptions dds = request.ros2_publish.value_or(Ros2PublishOptions{});
-    ros2.domain_id = dds.domain_id;
-    ros2.network = dds.network;
-    ros2.ros_namespace = dds.ros_namespace;
-    ros2.frame_width = robot_info.camera.width();
-    ros2.frame_height = robot_info.camera.height();
-    ros2.stop_requested = request.options.stop_requested;
-    const auto timeout = std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
-    ros2.connect_timeout = std::min(ros2.connect_timeout, timeout);
-    return std::make_unique<robot::ros2::Ros2Robot>(ros2);
+    return MakeRos2Robot(request, robot_info.camera.width(), robot_info.camera.height());
   }
   robot::RemoteRobotOptions remote;
-  remote.reply_timeout = std::chrono::milliseconds(std::llround(request.robot_timeout_s * 1000.0));
+  remote.reply_timeout = RobotTimeout(request);
   remote.frame_width = robot_info.camera.width();
   remote.frame_height = robot_info.camera.height();
   return std::make_unique<robot::RemoteRobot>(request.robot_url, remote);
@@ -299,9 +345,16 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     options.graph.odometry =
         OdometryModelOf(options.odometry_noise.value_or(world->robot().odometry_noise));
   }
-  const RobotDescription robot_info = DescribeRobot(request, world ? &*world : nullptr);
   std::unique_ptr<robot::Robot> remote;
-  if (!request.robot_url.empty()) remote = ConnectRobot(request, robot_info);
+  const RobotDescription robot_info = [&] {
+    const sim::World* w = world ? &*world : nullptr;
+    if (request.robot_url == kRos2Robot && !request.camera_path.empty()) {
+      return ConnectRos2Robot(request, w, remote);
+    }
+    RobotDescription description = DescribeRobot(request, w);
+    if (!request.robot_url.empty()) remote = ConnectRobot(request, description);
+    return description;
+  }();
   std::optional<Ros2RunPublisher> ros2;
   if (request.ros2_publish) ros2.emplace(*request.ros2_publish);
   CreateOutDir(request.out_dir);

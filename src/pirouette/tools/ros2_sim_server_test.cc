@@ -7,9 +7,14 @@
 #include <numbers>
 #include <string>
 #include <thread>
+#include <vector>
 
+#include "pirouette/io/camera_file.h"
 #include "pirouette/io/world_file.h"
 #include "pirouette/robot/ros2/ros2_robot.h"
+#include "pirouette/run/explore_job.h"
+#include "pirouette/run/ros2_camera.h"
+#include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::tools::ros2_sim_server_test {
 namespace {
@@ -17,6 +22,8 @@ namespace {
 // Each test its own DDS domain, so that tests running at once never meet.
 constexpr int kDomainMoves = 174;
 constexpr int kDomainContact = 175;
+constexpr int kDomainCameraInfo = 191;
+constexpr int kDomainExploreMount = 192;
 
 // The simulator served on a thread for the life of the object (built on it
 // too: the renderer's OpenGL context belongs to the thread that made it).
@@ -103,6 +110,67 @@ TEST(Ros2SimServerTest, ADriveIntoAWallEndsAtContact) {
   // It can still turn away and drive off.
   robot.Execute(core::Move::Turn(std::numbers::pi));
   EXPECT_FALSE(robot.Execute(core::Move::Straight(0.2)).stopped_at_contact);
+}
+
+// A camera file with only the mount (what `calibrate mount` measures): the
+// intrinsics come from the simulator's camera_info, and they are the world's.
+TEST(Ros2SimServerTest, CameraInfoGivesTheWorldsIntrinsicsToAMountOnlyCameraFile) {
+  const sim::World world =
+      io::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
+  const camera::CameraModel& truth = world.robot().camera;
+  Serving serving(world, kDomainCameraInfo);
+  robot::ros2::Ros2RobotOptions options = RobotOptions(kDomainCameraInfo, world);
+  options.frame_width = options.frame_height = 0;  // the camera file gives no size
+  robot::ros2::Ros2Robot robot(options);
+  io::CameraMountFile file;
+  file.name = "mount only";
+  file.mount = truth.mount();
+  file.vignetting = truth.vignetting();
+  std::vector<std::string> notes;
+  constexpr std::chrono::milliseconds kWait{10000};
+  const camera::CameraModel camera =
+      run::CameraOfRos2Robot(robot, file, "mount.yaml", kWait, kWait, notes);
+  EXPECT_EQ(camera.name(), "mount only");
+  EXPECT_EQ(camera.width(), truth.width());
+  EXPECT_EQ(camera.height(), truth.height());
+  EXPECT_EQ(camera.intrinsics().fx, truth.intrinsics().fx);
+  EXPECT_EQ(camera.intrinsics().fy, truth.intrinsics().fy);
+  EXPECT_EQ(camera.intrinsics().cx, truth.intrinsics().cx);
+  EXPECT_EQ(camera.intrinsics().cy, truth.intrinsics().cy);
+  EXPECT_EQ(camera.distortion(), truth.distortion());
+  EXPECT_EQ(camera.mount().tilt_rad, truth.mount().tilt_rad);
+  ASSERT_EQ(notes.size(), 1U);
+  EXPECT_NE(notes[0].find("intrinsics from rt/camera_info"), std::string::npos) << notes[0];
+  // Frames are now held to camera_info's size, and have it.
+  const robot::Frame frame = robot.Capture();
+  EXPECT_EQ(frame.image.width(), truth.width());
+}
+
+// `explore --robot ros2 --camera mount.yaml`: the run's camera has the
+// intrinsics of the robot's camera_info and the file's mount.
+TEST(Ros2SimServerTest, ExploreWithAMountOnlyCameraFileTakesCameraInfosIntrinsics) {
+  const sim::World world =
+      io::LoadWorldFile(std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml");
+  Serving serving(world, kDomainExploreMount);
+  const testing::TempDir dir;
+  run::ExploreRequest request;
+  request.robot_url = run::kRos2Robot;
+  request.ros2_publish = run::Ros2PublishOptions{kDomainExploreMount, {}, ""};
+  request.camera_path = dir.Write("mount.yaml",
+                                  "mount: {height: 0.11, tilt: 30, forward: 0.03}\n"
+                                  "vignetting: {k: [0.35, 0.30, 0.40]}\n");
+  request.radius_m = world.robot().radius;
+  request.out_dir = (dir.path() / "out").string();
+  request.quiet = true;
+  request.record_dir = (dir.path() / "log").string();
+  request.options.max_steps = 1;
+  const run::ExploreReport report = run::RunExplore(request);
+  EXPECT_EQ(report.run["status"], "step-limit") << report.run.dump(2);
+  // The run log records the run's camera: camera_info's intrinsics.
+  const camera::CameraModel logged = io::LoadCameraFile((dir.path() / "log/camera.yaml").string());
+  EXPECT_EQ(logged.intrinsics().fx, world.robot().camera.intrinsics().fx);
+  EXPECT_EQ(logged.distortion(), world.robot().camera.distortion());
+  EXPECT_EQ(logged.mount().height_m, 0.11);
 }
 
 }  // namespace

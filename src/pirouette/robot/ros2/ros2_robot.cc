@@ -74,7 +74,7 @@ struct Ros2Robot::Impl {
       command = controller != nullptr ? controller->Update(latest.pose, latest.time_s) : Velocity{};
       Send(command);
     } else if (Clock::now() - last_odometry_wall > options.odometry_timeout) {
-      Fail(fmt::format("no odometry on {} for {:.1f} s{}", odometry_reader.topic_name(),
+      Fail(fmt::format("no odometry on {} for {:g} s{}", odometry_reader.topic_name(),
                        Seconds(options.odometry_timeout),
                        odometry_reader.MatchedWriters() == 0 ? ": its publisher is gone" : ""));
     }
@@ -171,7 +171,7 @@ struct Ros2Robot::Impl {
         Fail(have_odometry
                  ? fmt::format("nothing subscribes to {}: the robot cannot be driven",
                                command_writer.topic_name())
-                 : fmt::format("no odometry on {} within {:.0f} s: is the robot's driver "
+                 : fmt::format("no odometry on {} within {:g} s: is the robot's driver "
                                "running, on this ROS_DOMAIN_ID and namespace, and reachable "
                                "(--ros-network)?",
                                odometry_reader.topic_name(), Seconds(options.connect_timeout)));
@@ -187,7 +187,7 @@ struct Ros2Robot::Impl {
       Spin();
       if (Clock::now() > deadline) {
         Fail(
-            fmt::format("the robot does not come to rest: {} still changes {:.0f} s after a "
+            fmt::format("the robot does not come to rest: {} still changes {:g} s after a "
                         "zero Twist on {}",
                         odometry_reader.topic_name(), Seconds(options.rest_timeout),
                         command_writer.topic_name()));
@@ -247,7 +247,12 @@ struct Ros2Robot::Impl {
                          move_controller.progress(), move.amount, Seconds(MoveTimeLimit(move))));
       }
     }
+    // Zero at once, whatever ended the move: a robot stopped by a wall (or
+    // a Ctrl-C at rest) is already at rest, so WaitForRest may send nothing,
+    // and the base would keep pushing with the last command.
     controller = nullptr;
+    command = {};
+    Send(command);
     WaitForRest();
     move_controller.Update(latest.pose, latest.time_s);
     outcome.achieved = move_controller.progress();
@@ -281,12 +286,12 @@ struct Ros2Robot::Impl {
       Spin();
       if (Clock::now() > deadline) {
         Fail(stale_stamp
-                 ? fmt::format("no new frame on {} within {:.0f} s of coming to rest: the "
+                 ? fmt::format("no new frame on {} within {:g} s of coming to rest: the "
                                "last one was stamped {:.3f} s, before the robot came to rest "
                                "at {:.3f} s (a frozen camera?)",
                                image_reader.topic_name(), Seconds(options.frame_timeout),
                                *stale_stamp - start_time_s, not_before_s - start_time_s)
-                 : fmt::format("no frame on {} within {:.0f} s{}", image_reader.topic_name(),
+                 : fmt::format("no frame on {} within {:g} s{}", image_reader.topic_name(),
                                Seconds(options.frame_timeout),
                                image_reader.MatchedWriters() == 0 ? " (no publisher)" : ""));
       }
@@ -330,5 +335,21 @@ core::Pose2 Ros2Robot::Odometry() const { return impl_->latest.pose; }
 void Ros2Robot::Halt() { impl_->Halt(); }
 std::optional<CameraInfo> Ros2Robot::camera_info() const { return impl_->camera_info; }
 std::string Ros2Robot::Describe() const { return impl_->Describe(); }
+
+std::optional<CameraInfo> Ros2Robot::WaitForCameraInfo(std::chrono::milliseconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  impl_->TakeCameraInfo();
+  while (!impl_->camera_info && Clock::now() < deadline) impl_->Spin();
+  return impl_->camera_info;
+}
+
+void Ros2Robot::SetFrameSize(int width, int height) {
+  impl_->options.frame_width = width;
+  impl_->options.frame_height = height;
+}
+
+std::string Ros2Robot::TopicName(std::string_view relative) const {
+  return impl_->participant.TopicName(relative);
+}
 
 }  // namespace pirouette::robot::ros2

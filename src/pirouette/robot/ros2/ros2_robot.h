@@ -1,10 +1,13 @@
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "pirouette/robot/move_controller.h"
 #include "pirouette/robot/robot.h"
@@ -79,6 +82,15 @@ class Ros2Robot : public Robot {
   void Halt();
   // The last camera_info received, if any.
   std::optional<CameraInfo> camera_info() const;
+  // Waits (answering odometry with zero, as at rest) up to `timeout` for a
+  // camera_info; nullopt when none came. Throws as Capture does when
+  // odometry stops meanwhile.
+  std::optional<CameraInfo> WaitForCameraInfo(std::chrono::milliseconds timeout);
+  // From now on frames must be width × height (camera_info's size, when the
+  // camera file gave none); 0: any size.
+  void SetFrameSize(int width, int height);
+  // The DDS name of one of the robot's topics ("rt/NS/camera_info").
+  std::string TopicName(std::string_view relative) const;
   // "DDS domain N, namespace NS", for messages and run.json.
   std::string Describe() const;
 
