@@ -1,0 +1,79 @@
+// The live view's page in a real browser: Debian's headless Chromium
+// (playwright-core drives it, CHROMIUM overrides /usr/bin/chromium) loads the
+// page during a run, waits for its #status to tell the run's end, reads the
+// map the page drew (#map-cells: one pixel a cell, map_server's greys) and
+// checks it equals OUT_DIR/map.pgm, then writes a screenshot of the page.
+//
+//   node browser_test.mjs URL OUT_DIR SCREENSHOT.png
+// Exit: 0 pass, 1 fail, 77 skip (playwright-core or Chromium absent).
+import fs from "node:fs";
+import { fail, skip, need, sleep, timeoutS, waitForPgm, compareWithPgm } from "./common.mjs";
+
+const [url, outDir, screenshot] = process.argv.slice(2);
+if (!url || !outDir || !screenshot) fail("usage: node browser_test.mjs URL OUT_DIR SCREENSHOT.png");
+const executablePath = process.env.CHROMIUM || "/usr/bin/chromium";
+if (!fs.existsSync(executablePath)) skip(`no Chromium at ${executablePath}: run scripts/setup (Debian's chromium)`);
+const { chromium } = await need("playwright-core");
+
+const browser = await chromium.launch({ executablePath, args: ["--no-sandbox"] });
+const errors = [];
+let code = 1;
+try {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  page.on("pageerror", (e) => errors.push(`uncaught: ${e.message}`));
+  page.on("console", (m) => { if (m.type() === "error" || m.type() === "warning") errors.push(`console ${m.type()}: ${m.text()}`); });
+
+  // The page, once the server is up (within 60 s).
+  const until = Date.now() + 60_000;
+  for (;;) {
+    try {
+      const response = await page.goto(url, { timeout: 10_000 });
+      if (!response.ok()) fail(`${url}: HTTP ${response.status()}`);
+      break;
+    } catch (e) {
+      if (Date.now() > until) fail(`could not load ${url} within 60 s: ${e.message.split("\n")[0]}`);
+      await sleep(250);
+    }
+  }
+  console.error(`loaded ${url}`);
+
+  try {
+    await page.waitForFunction(() => {
+      const s = document.getElementById("status")?.textContent;
+      return s && s !== "running";
+    }, null, { timeout: timeoutS * 1000, polling: 200 });
+  } catch {
+    fail(`#status did not leave "running" within ${timeoutS} s (LIVE_TEST_TIMEOUT_S); ` +
+      `it reads "${await page.textContent("#status")}", the connection "${await page.textContent("#connection")}"`);
+  }
+  const status = await page.textContent("#status");
+  console.error(`#status: ${status} ${await page.textContent("#reason")}`);
+  if (status !== "complete") fail(`the page says the run ended "${status}", not complete: ${await page.textContent("#reason")}`);
+  await sleep(1000); // a map sent right after the status, and its drawing
+
+  // The drawn map: the red channel of #map-cells, one byte a cell, the top row first.
+  const drawn = await page.evaluate(() => {
+    const canvas = document.getElementById("map-cells");
+    const { width, height } = canvas;
+    if (!width || !height) return { width, height, greys: "" };
+    const px = canvas.getContext("2d").getImageData(0, 0, width, height).data;
+    const grey = new Uint8Array(width * height);
+    for (let i = 0; i < grey.length; ++i) grey[i] = px[4 * i];
+    let s = "";
+    for (let i = 0; i < grey.length; i += 0x8000) s += String.fromCharCode(...grey.subarray(i, i + 0x8000));
+    return { width, height, greys: btoa(s) };
+  });
+  const greys = Buffer.from(drawn.greys, "base64");
+  await page.screenshot({ path: screenshot });
+  console.error(`wrote ${screenshot}`);
+
+  const pgm = await waitForPgm(outDir);
+  const result = compareWithPgm(drawn.width, drawn.height, greys, pgm, "the page's map (#map-cells)");
+  if (!result.ok) fail(result.message);
+  if (errors.length) fail(`the page reported errors: ${errors.join("; ")}`);
+  console.error(`PASS: ${result.message}; #status complete`);
+  code = 0;
+} finally {
+  await browser.close();
+}
+process.exit(code);
