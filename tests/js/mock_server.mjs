@@ -6,6 +6,7 @@
 // then "complete"; with --out it writes OUT/map.pgm at the end as a run does.
 //
 //   node tests/js/mock_server.mjs [--port 8765] [--out DIR] [--duration S] [--linger S] [--control]
+//     [--end STATUS] [--wrong-cells N]
 //   then open http://127.0.0.1:8765/
 import wsProtocol from "@foxglove/ws-protocol";
 import { MessageWriter } from "@foxglove/rosmsg2-serialization";
@@ -28,6 +29,9 @@ const { values: opt } = parseArgs({
     duration: { type: "string", default: "8" },
     linger: { type: "string", default: "20" },
     control: { type: "boolean", default: false },
+    // To check that the tests fail when they should: the run's end, and a map.pgm that differs.
+    end: { type: "string", default: "complete" },
+    "wrong-cells": { type: "string", default: "0" },
   },
 });
 const webDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "../../src/pirouette/view/web");
@@ -127,6 +131,9 @@ function writePgm(dir) {
       pixels[r * W + i] = v < 0 ? 205 : v === 100 ? 0 : 254;
     }
   }
+  for (let n = Number(opt["wrong-cells"]), i = 0; n > 0 && i < pixels.length; ++i) {
+    if (pixels[i] !== 205) { pixels[i] = 254 - pixels[i]; --n; }
+  }
   const file = path.join(dir, "map.pgm");
   fs.writeFileSync(file + ".tmp", Buffer.concat([Buffer.from(`P5\n# pirouette mock\n${W} ${H}\n255\n`), pixels]));
   fs.renameSync(file + ".tmp", file);
@@ -135,11 +142,11 @@ function writePgm(dir) {
 const tickMs = (Number(opt.duration) * 1000) / steps;
 see(route[0]);
 const timer = setInterval(() => {
-  if (ended) { publishAll(ended, ""); return; } // latched: late subscribers get the last of each
+  if (ended) { publishAll(ended, ended === "complete" ? "" : "the mock was told to end so"); return; } // latched: late subscribers get the last of each
   if (!paused && step < steps) { ++step; see(route[step]); }
   if (step >= steps) {
-    ended = "complete";
-    publishAll(ended, "");
+    ended = opt.end;
+    publishAll(ended, ended === "complete" ? "" : "the mock was told to end so");
     if (opt.out) writePgm(opt.out);
     console.error(`mock: complete; serving ${opt.linger} s more`);
     setTimeout(() => process.exit(0), Number(opt.linger) * 1000);
