@@ -8,12 +8,33 @@
 // Exit: 0 pass, 1 fail, 77 skip (playwright-core or Chromium absent).
 import fs from "node:fs";
 import { fail, skip, need, sleep, timeoutS, waitForPgm, compareWithPgm } from "./common.mjs";
+import { schema } from "./ros2_schemas.mjs";
 
 const [url, outDir, screenshot] = process.argv.slice(2);
 if (!url || !outDir || !screenshot) fail("usage: node browser_test.mjs URL OUT_DIR SCREENSHOT.png");
 const executablePath = process.env.CHROMIUM || "/usr/bin/chromium";
 if (!fs.existsSync(executablePath)) skip(`no Chromium at ${executablePath}: run scripts/setup (Debian's chromium)`);
 const { chromium } = await need("playwright-core");
+const { MessageWriter } = await need("@foxglove/rosmsg2-serialization");
+const { parse } = await need("@foxglove/rosmsg");
+
+// Messages of every type the page reads, written by rosmsg2-serialization:
+// the page's own CDR reader must read them back (odd string lengths, so that
+// the alignment matters).
+const stamp = { sec: 1700000000, nanosec: 123456789 };
+const pose = (x, y, z, w) => ({ position: { x, y, z: 0.5 }, orientation: { x: 0, y: 0, z, w } });
+const SAMPLES = {
+  "nav_msgs/msg/OccupancyGrid": { header: { stamp, frame_id: "m" }, info: { map_load_time: stamp, resolution: 0.25,
+    width: 3, height: 2, origin: pose(-1.5, 2.25, 0, 1) }, data: new Int8Array([0, 100, -1, -1, 0, 100]) },
+  "nav_msgs/msg/Path": { header: { stamp, frame_id: "map" }, poses: [
+    { header: { stamp, frame_id: "ab" }, pose: pose(1, 2, 0.6, 0.8) },
+    { header: { stamp, frame_id: "abcde" }, pose: pose(3, 4, -0.6, 0.8) }] },
+  "sensor_msgs/msg/CompressedImage": { header: { stamp, frame_id: "camera" }, format: "jpeg", data: new Uint8Array([255, 216, 1, 2, 3]) },
+  "std_msgs/msg/String": { data: "{\"status\":\"running\"}" },
+  "tf2_msgs/msg/TFMessage": { transforms: [{ header: { stamp, frame_id: "map" }, child_frame_id: "odom",
+    transform: { translation: { x: 0.1, y: -0.2, z: 0 }, rotation: { x: 0, y: 0, z: 0.6, w: 0.8 } } }] },
+};
+const plain = (v) => JSON.parse(JSON.stringify(v, (k, x) => (ArrayBuffer.isView(x) ? Array.from(x) : x)));
 
 const browser = await chromium.launch({ executablePath, args: ["--no-sandbox"] });
 const errors = [];
@@ -36,6 +57,23 @@ try {
     }
   }
   console.error(`loaded ${url}`);
+
+  for (const [type, message] of Object.entries(SAMPLES)) {
+    const bytes = new MessageWriter(parse(schema(type), { ros2: true })).writeMessage(message);
+    const got = await page.evaluate(([t, b]) => {
+      try {
+        const m = decode(t, new Uint8Array(b)); // app.js's reader
+        return JSON.parse(JSON.stringify(m, (k, x) => (ArrayBuffer.isView(x) ? Array.from(x) : x)));
+      } catch (e) {
+        return { error: e.message };
+      }
+    }, [type, Array.from(bytes)]);
+    if (JSON.stringify(got) !== JSON.stringify(plain(message))) {
+      fail(`the page reads a ${type} that rosmsg2-serialization wrote as ${JSON.stringify(got)}, ` +
+        `not ${JSON.stringify(plain(message))}`);
+    }
+  }
+  console.error(`the page's CDR reader reads back ${Object.keys(SAMPLES).length} types that rosmsg2-serialization wrote`);
 
   try {
     await page.waitForFunction(() => {
