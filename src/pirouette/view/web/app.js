@@ -210,9 +210,9 @@ let floorUrl = null;
 function setFloor(image) {
   const type = image.format.includes("png") ? "image/png" : "image/jpeg";
   const url = URL.createObjectURL(new Blob([image.data], { type }));
-  const img = $("floor");
-  img.onload = () => { if (floorUrl && floorUrl !== url) URL.revokeObjectURL(floorUrl); floorUrl = url; };
-  img.src = url;
+  if (floorUrl) URL.revokeObjectURL(floorUrl); // the image shown keeps its pixels
+  floorUrl = url;
+  $("floor").src = url;
 }
 
 function note(text, bad) {
@@ -267,20 +267,19 @@ function handleBinary(buffer) {
   const dv = new DataView(buffer);
   const ch = subscriptions.get(dv.getUint32(1, true));
   if (!ch) return;
-  let m;
+  const topic = "/" + ch.topic.replace(/^\//, ""); // a namespace may come before the names
   try {
-    m = decode(ch.schemaName, bytes.subarray(13));
+    const m = decode(ch.schemaName, bytes.subarray(13));
+    if (topic.endsWith("/map")) setMap(m);
+    else if (topic.endsWith("/pirouette/path")) state.path = m.poses;
+    else if (topic.endsWith("/pirouette/plan")) state.plan = m.poses;
+    else if (topic.endsWith("/pirouette/status")) setStatus(m.data);
+    else if (topic.endsWith("/pirouette/floor")) setFloor(m);
+    else return;
   } catch (e) {
     console.warn(`${ch.topic}: ${e.message}`);
     return;
   }
-  const topic = "/" + ch.topic.replace(/^\//, ""); // a namespace may come before the names
-  if (topic.endsWith("/map")) setMap(m);
-  else if (topic.endsWith("/pirouette/path")) state.path = m.poses;
-  else if (topic.endsWith("/pirouette/plan")) state.plan = m.poses;
-  else if (topic.endsWith("/pirouette/status")) setStatus(m.data);
-  else if (topic.endsWith("/pirouette/floor")) setFloor(m);
-  else return;
   redraw();
 }
 
