@@ -36,7 +36,14 @@ const SAMPLES = {
 };
 const plain = (v) => JSON.parse(JSON.stringify(v, (k, x) => (ArrayBuffer.isView(x) ? Array.from(x) : x)));
 
-const browser = await chromium.launch({ executablePath, args: ["--no-sandbox"] });
+const browser = await chromium.launch({ executablePath, args: ["--no-sandbox"], handleSIGINT: false, handleSIGTERM: false });
+for (const signal of ["SIGINT", "SIGTERM"]) {
+  process.on(signal, async () => {
+    console.error(`stopped (${signal})`);
+    await browser.close().catch(() => {});
+    process.exit(1);
+  });
+}
 const errors = [];
 let code = 1;
 try {

@@ -52,9 +52,12 @@ fi
 run_pid=$!
 
 url=http://127.0.0.1:$port/
-[ "$mode" = browser ] && test+=("$url" "$out" "$work/live_view.png") || test+=("$url" "$out")
+test+=("$url" "$out")
+[ "$mode" = browser ] && test+=("$work/live_view.png")
 node "$here/${test[0]}" "${test[@]:1}" &
 test_pid=$!
+# Stopped itself (ctest's timeout, Ctrl-C): the run and the test stop too.
+trap 'kill "$run_pid" "$test_pid" 2>/dev/null; exit 1' INT TERM
 
 # Waits for the test; when the run ends first, the test has 30 s more
 # (5 s if the run failed) before it is stopped.
