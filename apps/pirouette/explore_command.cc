@@ -33,6 +33,7 @@ struct ExploreChoices {
   std::vector<double> odometry_noise;  // {} or {translation, rotation}
   std::vector<double> odometry_bias;   // {} or {translation, rotation}
   Ros2Choices ros2;
+  ViewChoices view;
 };
 
 // The world, where the outputs go, the seed and the step limit.
@@ -79,6 +80,7 @@ void AddRobotAndOutputOptions(CLI::App* cmd, run::ExploreRequest& request,
                   "also write a run log (pirouette-log/1: camera.yaml, frames/, frames.csv) in "
                   "this new folder; `pirouette map --log DIR` maps it again");
   AddRos2PublishOptions(cmd, choices.ros2);
+  AddViewOptions(cmd, choices.view);
   AddQuietOption(cmd, request.quiet);
 }
 
@@ -97,6 +99,8 @@ void Explore(run::ExploreRequest& request, const ExploreChoices& choices) {
   Ros2Choices ros2 = choices.ros2;
   if (request.robot_url == run::kRos2Robot) ros2.publish = true;  // its topics are NS's too
   request.ros2_publish = Ros2PublishOf(ros2);
+  request.live_view = LiveViewOf(choices.view, ros2.ros_namespace);
+  request.on_view = AnnounceView("explore", request.quiet);
   request.options.stop_requested = StopOnInterrupt();
   const run::ExploreReport report = run::RunExplore(request);
   const std::string& status = report.result.status;

@@ -1,7 +1,9 @@
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "apps/pirouette/command.h"
+#include "apps/pirouette/interrupt.h"
 #include "apps/pirouette/options.h"
 #include "pirouette/run/log_replay.h"
 
@@ -10,6 +12,7 @@ namespace pirouette::cli {
 Command AddMapCommand(CLI::App& parent) {
   auto request = std::make_shared<run::MapLogRequest>();
   auto ros2 = std::make_shared<Ros2Choices>();
+  auto view = std::make_shared<ViewChoices>();
   CLI::App* cmd = parent.add_subcommand(
       "map",
       "Build the map of a recorded run (a pirouette-log/1 folder, as `explore --record DIR` "
@@ -32,14 +35,22 @@ Command AddMapCommand(CLI::App& parent) {
   AddMethodOption(cmd, request->method, kSegmentationMethods, "the log's");
   AddLocalizeOption(cmd, request->localize, "the log's, else none");
   AddRos2PublishOptions(cmd, *ros2);
+  AddViewOptions(cmd, *view);
   AddQuietOption(cmd, request->quiet);
-  return {cmd, [request, ros2] {
+  return {cmd, [request, ros2, view] {
             request->ros2_publish = Ros2PublishOf(*ros2);
+            request->live_view = LiveViewOf(*view, ros2->ros_namespace);
+            request->on_view = AnnounceView("map", request->quiet);
+            request->stop_requested = StopOnInterrupt();
             const run::MapLogReport report = run::RunMapLog(*request);
             if (!request->quiet) {
               std::fprintf(stderr, "map: %d frames in %.1f s; map in %s/map.yaml\n",
                            report.result.frames, report.result.wall_time_s,
                            request->out_dir.c_str());
+            }
+            if (report.result.status == "interrupted") {
+              throw std::runtime_error("interrupted; the map of the frames before is in " +
+                                       request->out_dir);
             }
           }};
 }

@@ -1,5 +1,6 @@
 #include "apps/pirouette/options.h"
 
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -243,6 +244,49 @@ std::optional<run::Ros2PublishOptions> Ros2PublishOf(const Ros2Choices& choices)
     throw core::InputError("--ros-network", 0, "", e.what());
   }
   return options;
+}
+
+void AddViewOptions(CLI::App* app, ViewChoices& choices) {
+  app->add_option("--view", choices.endpoint,
+                  "serve a live view of the run on [HOST:]PORT: a web page at http://HOST:PORT/ "
+                  "(the map growing, the robot, its path and plan, the camera's last frame with "
+                  "its floor, progress) and the Foxglove WebSocket protocol at ws://HOST:PORT/ "
+                  "for Foxglove (docs/live_view.md). HOST defaults to 127.0.0.1, this machine "
+                  "only; 0.0.0.0 opens it to every network the machine is on: anyone who "
+                  "reaches the port sees the run")
+      ->type_name("[HOST:]PORT");
+  app->add_flag("--view-control", choices.control,
+                "let the live view pause, resume and stop the run and send the robot home "
+                "(default: it only watches and refuses every such request)");
+  app->add_option("--view-linger", choices.linger_s,
+                  "seconds to keep serving the live view after the run ends, so a page opened "
+                  "late still sees the end (ends sooner once every client has left; Ctrl-C ends "
+                  "it)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+}
+
+std::optional<run::LiveViewOptions> LiveViewOf(const ViewChoices& choices,
+                                               const std::string& ros_namespace) {
+  if (choices.endpoint.empty()) {
+    if (choices.control) throw core::InputError("--view-control", 0, "", "needs --view");
+    return std::nullopt;
+  }
+  run::LiveViewOptions options;
+  options.endpoint = view::ParseEndpoint(choices.endpoint, "--view");
+  options.control = choices.control;
+  options.linger_s = choices.linger_s;
+  options.ros_namespace = ros_namespace;
+  return options;
+}
+
+std::function<void(const view::Endpoint&)> AnnounceView(const char* command, bool quiet) {
+  return [command, quiet](const view::Endpoint& endpoint) {
+    if (quiet) return;
+    const std::string url = view::HttpUrl(endpoint);
+    std::fprintf(stderr, "%s: live view at %s (Foxglove: ws%s)\n", command, url.c_str(),
+                 url.substr(4).c_str());
+  };
 }
 
 }  // namespace pirouette::cli

@@ -2,11 +2,13 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "pirouette/run/live_view_publisher.h"
 #include "pirouette/run/ros2_run_publisher.h"
 
 namespace pirouette::cli {
@@ -105,5 +107,21 @@ void AddRos2PublishOptions(CLI::App* app, Ros2Choices& choices);
 // domain ROS_DOMAIN_ID names. Throws core::InputError naming ROS_DOMAIN_ID,
 // --ros-namespace or --ros-network for a value ROS 2 or Cyclone would refuse.
 std::optional<run::Ros2PublishOptions> Ros2PublishOf(const Ros2Choices& choices);
+
+// --view [HOST:]PORT, --view-control, --view-linger (SPEC.md, "Live view").
+struct ViewChoices {
+  std::string endpoint;
+  bool control = false;
+  double linger_s = 0.0;
+};
+void AddViewOptions(CLI::App* app, ViewChoices& choices);
+
+// The live view the choices ask for (none without --view), its topics under
+// `ros_namespace`. Throws core::InputError naming the option at fault.
+std::optional<run::LiveViewOptions> LiveViewOf(const ViewChoices& choices,
+                                               const std::string& ros_namespace);
+
+// Says on standard error where the view listens (unless quiet).
+std::function<void(const view::Endpoint&)> AnnounceView(const char* command, bool quiet);
 
 }  // namespace pirouette::cli

@@ -18,6 +18,7 @@
 #include "pirouette/robot/ros2/dds_participant.h"
 #include "pirouette/sim/simulated_robot.h"
 #include "pirouette/tools/ros2_sim_server.h"
+#include "pirouette/tools/sim_view.h"
 
 namespace pirouette::cli {
 namespace {
@@ -32,7 +33,19 @@ struct SimServeRequest {
   std::vector<double> odometry_bias;   // {} or {translation, rotation}
   bool ros2 = false;                   // serve as a ROS 2 robot over DDS instead
   Ros2Choices ros2_choices;
+  ViewChoices view;
 };
+
+// The live view of --view, if asked for: it listens before the robot does.
+std::unique_ptr<tools::SimView> MakeSimView(const SimServeRequest& request,
+                                            const sim::World& world) {
+  const std::optional<run::LiveViewOptions> options =
+      LiveViewOf(request.view, request.ros2_choices.ros_namespace);
+  if (!options) return nullptr;
+  auto view = std::make_unique<tools::SimView>(world, *options);
+  AnnounceView("sim-serve", false)(view->endpoint());
+  return view;
+}
 
 // The simulator as a ROS 2 robot over DDS (tools::Ros2SimServer).
 void ServeRos2(const SimServeRequest& request, const sim::World& world,
@@ -45,6 +58,12 @@ void ServeRos2(const SimServeRequest& request, const sim::World& world,
   options.network = dds.network;
   options.ros_namespace = dds.ros_namespace;
   options.stop_requested = StopOnInterrupt();
+  std::unique_ptr<tools::SimView> view = MakeSimView(request, world);
+  if (view) {
+    options.on_render = [&view](const core::ImageRgb8& image, const core::Pose2& pose) {
+      view->OnFrame(image, pose);
+    };
+  }
   try {
     tools::Ros2SimServer server(world, request.seed, noise, options);
     std::fprintf(stderr, "sim-serve: a ROS 2 robot on %s (world %s, seed %llu); Ctrl-C stops\n",
@@ -75,7 +94,11 @@ void Serve(const SimServeRequest& request) {
     return;
   }
   sim::SimulatedRobot simulated(world, request.seed, noise);
-  robot::Robot& robot = simulated.robot();
+  std::unique_ptr<tools::SimView> view = MakeSimView(request, world);
+  tools::WatchedRobot watched(simulated.robot(), [&](const robot::Frame& frame) {
+    if (view) view->OnFrame(frame.image, simulated.robot().TruePose());
+  });
+  robot::Robot& robot = watched;
 
   robot::RobotServerOptions options;
   options.host = request.host;
@@ -129,6 +152,7 @@ Command AddSimServeCommand(CLI::App& parent) {
   cmd->add_option("--ros-network", request->ros2_choices.network,
                   "with --ros2: let DDS leave this machine (an interface such as eth0 or its "
                   "IPv4 address, or auto); default loopback only");
+  AddViewOptions(cmd, request->view);
   return {cmd, [request] {
             if (!request->ros2 && (!request->ros2_choices.ros_namespace.empty() ||
                                    !request->ros2_choices.network.empty())) {

@@ -45,6 +45,17 @@ inline constexpr mapping::OccupancyOptions kExplorationOccupancy{.hit_probabilit
 // few hundred), so that only a run that goes round in circles meets it.
 inline constexpr int kDefaultMaxSteps = 2000;
 
+// What a live view with --view-control may ask of a run (LiveServer's
+// ControlCommand), read between the run's steps: while `pause` is set the
+// robot stands still; `stop` ends the run with status "interrupted" and the
+// map so far, as Ctrl-C does; `home` ends the exploration and drives the
+// robot back to where it started, then ends as `stop` does.
+struct RunControl {
+  std::atomic<bool> pause{false};
+  std::atomic<bool> stop{false};
+  std::atomic<bool> home{false};
+};
+
 // How an exploration runs. Zero for a length means "derive it".
 struct ExplorationOptions {
   std::uint64_t seed = 1;
@@ -73,6 +84,8 @@ struct ExplorationOptions {
   // Checked between steps; when it becomes true the run ends with status
   // "interrupted" and the map so far.
   const std::atomic<bool>* stop_requested = nullptr;
+  // A live view's controls (--view-control); none: nobody may ask.
+  const RunControl* control = nullptr;
 };
 
 // The graph's odometry model for a simulated robot of this noise: the

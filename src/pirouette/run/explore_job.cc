@@ -29,6 +29,7 @@
 #include "pirouette/robot/ros2/ros2_robot.h"
 #include "pirouette/run/progress_line.h"
 #include "pirouette/run/ros2_camera.h"
+#include "pirouette/run/run_watchers.h"
 #include "pirouette/run/simulated_exploration.h"
 #include "pirouette/sim/simulated_robot.h"
 #include "pirouette/vision/floor_segmenter.h"
@@ -345,6 +346,11 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     options.graph.odometry =
         OdometryModelOf(options.odometry_noise.value_or(world->robot().odometry_noise));
   }
+  const RunWatchers watchers(request.ros2_publish, request.live_view);
+  if (watchers.view != nullptr) {
+    if (request.on_view) request.on_view(watchers.view->endpoint());
+    options.control = &watchers.view->control();
+  }
   std::unique_ptr<robot::Robot> remote;
   const RobotDescription robot_info = [&] {
     const sim::World* w = world ? &*world : nullptr;
@@ -355,8 +361,6 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     if (!request.robot_url.empty()) remote = ConnectRobot(request, description);
     return description;
   }();
-  std::optional<Ros2RunPublisher> ros2;
-  if (request.ros2_publish) ros2.emplace(*request.ros2_publish);
   CreateOutDir(request.out_dir);
   const std::filesystem::path out(request.out_dir);
   std::optional<draw::ExplorationVideo> video;
@@ -375,7 +379,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
       video->AddFrame(event.bgr, event.floor_mask, event.odom_T_robot, event.grid);
     };
   }
-  if (ros2) ros2->Watch(observer);
+  watchers.Watch(observer);
   std::optional<Recorder> recorder;
   if (!request.record_dir.empty())
     recorder.emplace(request, robot_info, options.graph.odometry).Watch(observer);
@@ -400,7 +404,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   }
   io::WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
-  if (ros2) ros2->PublishFinal(map, report.result);
+  watchers.Finish(map, report.result, request.options.stop_requested);
   return report;
 }
 

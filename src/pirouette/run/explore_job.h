@@ -2,12 +2,14 @@
 
 #include <array>
 #include <atomic>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "pirouette/run/explorer.h"
+#include "pirouette/run/live_view_publisher.h"
 #include "pirouette/run/ros2_run_publisher.h"
 
 namespace pirouette::run {
@@ -40,6 +42,10 @@ struct ExploreRequest {
   std::optional<std::array<double, 2>> odometry_bias;
   // Set: publish the run to ROS 2 over DDS as it goes (Ros2RunPublisher).
   std::optional<Ros2PublishOptions> ros2_publish;
+  // Set: serve the live view (LiveViewPublisher) from before the robot is
+  // reached to after the run, and tell `on_view` where it listens.
+  std::optional<LiveViewOptions> live_view;
+  std::function<void(const view::Endpoint&)> on_view;
 };
 
 // What it made.

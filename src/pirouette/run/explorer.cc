@@ -10,6 +10,7 @@
 #include <numbers>
 #include <set>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "pirouette/camera/inverse_perspective_map.h"
@@ -154,6 +155,7 @@ class Explorer {
     int moves_before = result_.moves;
     while (result_.status.empty()) {
       if (Interrupted()) break;
+      if (HomeRequested()) break;
       idle = result_.moves == moves_before ? idle + 1 : 0;
       moves_before = result_.moves;
       if (idle > kMaxIdlePlans) {
@@ -198,6 +200,14 @@ class Explorer {
         }
       }
     }
+    if (HomeRequested() && result_.status.empty()) {
+      ReturnHome();
+      if (result_.status.empty()) {
+        result_.status = "interrupted";
+        result_.reason = "sent home from the live view";
+      }
+      return;
+    }
     if (result_.status == "complete" && options_.return_home) {
       result_.status.clear();
       ReturnHome();
@@ -209,11 +219,31 @@ class Explorer {
   core::Pose2 Pose() const { return mapper_.ToMap(robot_.Odometry()); }
 
   bool Interrupted() {
+    WaitWhilePaused();
     if (options_.stop_requested != nullptr && options_.stop_requested->load()) {
       result_.status = "interrupted";
       return true;
     }
+    if (options_.control != nullptr && options_.control->stop.load()) {
+      result_.status = "interrupted";
+      result_.reason = "stopped from the live view";
+      return true;
+    }
     return false;
+  }
+
+  bool HomeRequested() const {
+    return options_.control != nullptr && options_.control->home.load();
+  }
+
+  // Stands still while a live view holds the run paused (and nothing ends it).
+  void WaitWhilePaused() const {
+    constexpr auto kPoll = std::chrono::milliseconds(50);
+    while (options_.control != nullptr && options_.control->pause.load() &&
+           !options_.control->stop.load() && !options_.control->home.load() &&
+           (options_.stop_requested == nullptr || !options_.stop_requested->load())) {
+      std::this_thread::sleep_for(kPoll);
+    }
   }
 
   // Takes a frame, reads its obstacle profile and puts it in the map; the

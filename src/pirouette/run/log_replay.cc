@@ -18,6 +18,7 @@
 #include "pirouette/run/explore_job.h"
 #include "pirouette/run/frame_mapper.h"
 #include "pirouette/run/progress_line.h"
+#include "pirouette/run/run_watchers.h"
 #include "pirouette/vision/floor_segmenter.h"
 
 namespace pirouette::run {
@@ -98,7 +99,8 @@ LocalizeKind LocalizeOf(const MapLogRequest& request, const io::RunLog& log,
 // Maps the log's frames in order, as the run did; the result's grid, path
 // (the frames' map poses, where they moved), frames and times.
 ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
-                         vision::SegmentationMethod method, bool quiet, Ros2RunPublisher* ros2) {
+                         vision::SegmentationMethod method, bool quiet, const RunWatchers& watchers,
+                         const std::atomic<bool>* stop_requested) {
   const Clock::time_point start = Clock::now();
   std::unique_ptr<vision::FloorSegmenter> segmenter =
       vision::MakeFloorSegmenter(method, setup.camera);
@@ -108,6 +110,10 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
   ExplorationResult result;
   run::ProgressLine progress(quiet);
   for (const io::RunLogRow& row : log.rows) {
+    if (stop_requested != nullptr && stop_requested->load()) {
+      result.status = "interrupted";
+      break;
+    }
     const robot::Frame frame = io::ReadLogFrame(log, row);
     if (row.contact) mapper.AddContact(row.odometry);
     const FrameMapper::Seen seen = mapper.AddFrame(frame);
@@ -122,7 +128,7 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
       result.path.push_back(seen.pose);
     }
     const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-    if (ros2 != nullptr) {
+    if (!watchers.all.empty()) {
       static const std::vector<core::Pose2> kNoStops;
       static const std::vector<Eigen::Vector2d> kNoPlan;
       const mapping::OccupancyGrid& grid = mapper.grid();
@@ -130,9 +136,11 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
       at.known_area_m2 = static_cast<double>(grid.KnownCellCount()) * grid.geometry().resolution() *
                          grid.geometry().resolution();
       at.elapsed_s = elapsed;
-      ros2->Publish(RunSnapshot{grid, result.path, kNoStops, kNoPlan, seen.pose,
-                                seen.pose * row.odometry.Inverse(), seen.bgr, seen.mask,
-                                result.frames, at});
+      const RunSnapshot snapshot{grid,     result.path, kNoStops,
+                                 kNoPlan,  seen.pose,   seen.pose * row.odometry.Inverse(),
+                                 seen.bgr, seen.mask,   result.frames,
+                                 at};
+      for (const auto& watcher : watchers.all) watcher->Publish(snapshot);
     }
     progress.Show(elapsed, [&] {
       return fmt::format("map: frame {} of {}, {:.1f} s", result.frames, log.rows.size(), elapsed);
@@ -147,7 +155,7 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
     result.scan_matches = graph->scan_matches();
   }
   result.final_frame_poses = mapper.FramePoses();
-  result.status = "complete";
+  if (result.status.empty()) result.status = "complete";
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   result.times.perceive_s = mapper.perceive_s();
   result.times.update_s = mapper.update_s();
@@ -201,9 +209,10 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
                            "cannot create the output folder: " + error.message());
   }
 
-  std::optional<Ros2RunPublisher> ros2;
-  if (request.ros2_publish) ros2.emplace(*request.ros2_publish);
-  MapLogReport report{Replay(log, setup, method, request.quiet, ros2 ? &*ros2 : nullptr), {}};
+  const RunWatchers watchers(request.ros2_publish, request.live_view);
+  if (watchers.view != nullptr && request.on_view) request.on_view(watchers.view->endpoint());
+  MapLogReport report{Replay(log, setup, method, request.quiet, watchers, request.stop_requested),
+                      {}};
   const ExplorationResult& result = report.result;
   const mapping::TrinaryMap map = WriteMapOutputs(request.out_dir, result);
   nlohmann::json& run = report.run;
@@ -221,7 +230,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
                          {"update", Round(result.times.update_s, 1e-4)}};
   if (world) run["eval"] = eval::MapEvaluationToJson(eval::EvaluateMap(map, *world));
   io::WriteFileAtomically((fs::path(request.out_dir) / "run.json").string(), run.dump(2) + "\n");
-  if (ros2) ros2->PublishFinal(map, result);
+  watchers.Finish(map, result, request.stop_requested);
   return report;
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
 #include "pirouette/run/explorer.h"
+#include "pirouette/run/live_view_publisher.h"
 #include "pirouette/run/ros2_run_publisher.h"
 
 namespace pirouette::run {
@@ -23,6 +25,12 @@ struct MapLogRequest {
   bool quiet = false;
   // Set: publish the map to ROS 2 over DDS frame by frame (Ros2RunPublisher).
   std::optional<Ros2PublishOptions> ros2_publish;
+  // Set: serve the live view frame by frame (LiveViewPublisher); `on_view`
+  // is told where it listens.
+  std::optional<LiveViewOptions> live_view;
+  std::function<void(const view::Endpoint&)> on_view;
+  // Checked between frames (Ctrl-C): the replay ends with the map so far.
+  const std::atomic<bool>* stop_requested = nullptr;
 };
 
 struct MapLogReport {

@@ -6,6 +6,7 @@
 #include "pirouette/mapping/trinary_map.h"
 #include "pirouette/robot/ros2/dds_participant.h"
 #include "pirouette/run/exploration_result.h"
+#include "pirouette/run/run_watcher.h"
 
 namespace pirouette::run {
 
@@ -22,30 +23,30 @@ struct Ros2PublishOptions {
 // the map_server thresholds, the part seen with its margin as map.pgm has it),
 // `tf` (map → odom), `pirouette/path` and `pirouette/plan` (nav_msgs/Path),
 // `pirouette/floor` (the last frame with its floor drawn, bgr8) and
-// `pirouette/status` (std_msgs/String, JSON {"status": "running", "stops",
-// "known_area_m2", "reason"}). Not thread-safe: call from the run's thread.
-class Ros2RunPublisher {
+// `pirouette/status` (std_msgs/String, StatusJson). The messages are
+// run_messages.h's. Not thread-safe: call from the run's thread.
+class Ros2RunPublisher : public RunWatcher {
  public:
   // Throws robot::ros2::DdsError when the participant or a writer cannot be made.
   explicit Ros2RunPublisher(const Ros2PublishOptions& options);
-  ~Ros2RunPublisher();
+  ~Ros2RunPublisher() override;
   Ros2RunPublisher(const Ros2RunPublisher&) = delete;
   Ros2RunPublisher& operator=(const Ros2RunPublisher&) = delete;
 
   // Chains onto the observer's on_snapshot (keeping what was there).
   void Watch(ExplorationObserver& observer);
 
-  void Publish(const RunSnapshot& snapshot);
+  void Publish(const RunSnapshot& snapshot) override;
 
   // The end of the run: the map as written (map.pgm's cells, byte for byte),
   // the path, and the final status with its reason; then waits up to
   // `linger_s` for matched reliable readers to acknowledge them.
   void PublishFinal(const mapping::TrinaryMap& map, const ExplorationResult& result,
-                    double linger_s = 2.0);
-
-  // The status JSON (one line).
-  static std::string StatusJson(const std::string& status, int stops, double known_area_m2,
-                                const std::string& reason);
+                    double linger_s);
+  void PublishFinal(const mapping::TrinaryMap& map, const ExplorationResult& result) override {
+    PublishFinal(map, result, kLingerS);
+  }
+  static constexpr double kLingerS = 2.0;
 
  private:
   struct Writers;

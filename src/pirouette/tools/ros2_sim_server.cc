@@ -130,6 +130,7 @@ struct Ros2SimServer::Impl {
         rendered_at->heading() != pose.heading()) {
       image = renderer.Render(pose);
       rendered_at = pose;
+      if (options.on_render) options.on_render(image, pose);
     }
     const double t = robot.time_s();
     ros2::Sample<sensor_msgs_msg_dds__Image_> message;

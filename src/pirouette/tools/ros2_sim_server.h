@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "pirouette/core/image.h"
 #include "pirouette/core/odometry_noise.h"
 #include "pirouette/robot/ros2/dds_participant.h"
 #include "pirouette/sim/velocity_robot.h"
@@ -29,6 +30,9 @@ struct Ros2SimServerOptions {
   sim::VelocityLimits limits;
   // Set: Serve returns.
   const std::atomic<bool>* stop_requested = nullptr;
+  // Told of each newly rendered frame with the true pose it was rendered at
+  // (sim-serve --view), on the serving thread.
+  std::function<void(const core::ImageRgb8&, const core::Pose2& world_T_robot)> on_render;
 };
 
 // The simulator as a ROS 2 robot (SPEC.md, "ROS 2 over DDS": sim-serve

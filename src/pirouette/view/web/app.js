@@ -85,7 +85,7 @@ function yawOf(q) {
 }
 
 // ---- What the page knows of the run.
-const state = { map: null, path: [], plan: [], status: null };
+const state = { map: null, path: [], stops: [], plan: [], status: null };
 const $ = (id) => document.getElementById(id);
 const cells = $("map-cells");
 const view = $("map");
@@ -114,7 +114,7 @@ function setMap(grid) {
   ctx.putImageData(image, 0, 0);
 }
 
-// Draws the map scaled to fit, then the path, its stops, the plan and the robot.
+// Draws the map scaled to fit, then the path, the stops, the plan and the robot.
 function draw() {
   const box = view.getBoundingClientRect();
   const dpr = window.devicePixelRatio || 1;
@@ -154,6 +154,14 @@ function draw() {
     ctx.beginPath();
     ctx.arc(x, y, unit * 0.6, 0, 2 * Math.PI);
     ctx.fill();
+  }
+  ctx.strokeStyle = "#1f6fd1"; // the stops: where the robot pirouetted, a ring each
+  ctx.lineWidth = unit / 2;
+  for (const p of state.stops) {
+    const [x, y] = toPx(p.pose.position);
+    ctx.beginPath();
+    ctx.arc(x, y, unit * 1.6, 0, 2 * Math.PI);
+    ctx.stroke();
   }
   line(state.plan, "#e07b00", [unit * 1.5, unit]);
   if (state.plan.length) {
@@ -273,6 +281,7 @@ function handleBinary(buffer) {
     if (topic.endsWith("/map")) setMap(m);
     else if (topic.endsWith("/pirouette/path")) state.path = m.poses;
     else if (topic.endsWith("/pirouette/plan")) state.plan = m.poses;
+    else if (topic.endsWith("/pirouette/stops")) state.stops = m.poses;
     else if (topic.endsWith("/pirouette/status")) setStatus(m.data);
     else if (topic.endsWith("/pirouette/floor")) setFloor(m);
     else return;

@@ -1,0 +1,61 @@
+#include "pirouette/tools/sim_view.h"
+
+#include <cmath>
+
+#include "pirouette/io/image_io.h"
+#include "pirouette/run/run_messages.h"
+
+namespace pirouette::tools {
+
+namespace {
+
+// The truth map reaches this far past the floor (the boundary walls' side).
+constexpr double kMarginM = 0.25;
+
+}  // namespace
+
+mapping::TrinaryMap TruthMap(const sim::World& world, double cell_m) {
+  const Eigen::Vector2d size = world.floor().size;
+  const double wall = world.walls() ? world.walls()->thickness : cell_m;
+  const Eigen::Vector2d origin(-kMarginM, -kMarginM);
+  const int width = static_cast<int>(std::ceil((size.x() + 2 * kMarginM) / cell_m));
+  const int height = static_cast<int>(std::ceil((size.y() + 2 * kMarginM) / cell_m));
+  mapping::TrinaryMap map{core::GridGeometry(cell_m, origin, width, height), {}};
+  map.cells.resize(map.geometry.CellCount(), mapping::CellState::kUnknown);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const Eigen::Vector2d p = map.geometry.CellCentre({x, y});
+      const bool near_floor =
+          p.x() > -wall && p.y() > -wall && p.x() < size.x() + wall && p.y() < size.y() + wall;
+      mapping::CellState& cell = map.cells[map.geometry.Flat({x, y})];
+      if (world.OnFloor(p) && !world.IsOccupied(p)) {
+        cell = mapping::CellState::kFree;
+      } else if (near_floor) {
+        cell = mapping::CellState::kOccupied;
+      }
+    }
+  }
+  return map;
+}
+
+SimView::SimView(const sim::World& world, const run::LiveViewOptions& options)
+    : publisher_(options) {
+  publisher_.PublishMap(TruthMap(world, kTruthCellM));
+  path_.push_back(world.robot().start);
+  publisher_.PublishPath(path_);
+  publisher_.PublishStatus(run::StatusJson("serving", 0, 0.0, "waiting for a client"));
+}
+
+void SimView::OnFrame(const core::ImageRgb8& image, const core::Pose2& world_T_robot) {
+  ++frames_;
+  const core::Pose2& last = path_.back();
+  if (last.x() != world_T_robot.x() || last.y() != world_T_robot.y() ||
+      last.heading() != world_T_robot.heading()) {
+    path_.push_back(world_T_robot);
+    publisher_.PublishPath(path_);
+  }
+  publisher_.PublishPicture(cv::Mat3b(io::ToBgrMat(image)));
+  publisher_.PublishStatus(run::StatusJson("serving", frames_, 0.0, "frames served"));
+}
+
+}  // namespace pirouette::tools
