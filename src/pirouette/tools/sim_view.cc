@@ -1,5 +1,6 @@
 #include "pirouette/tools/sim_view.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "pirouette/io/image_io.h"
@@ -9,17 +10,20 @@ namespace pirouette::tools {
 
 namespace {
 
-// The truth map reaches this far past the floor (the boundary walls' side).
-constexpr double kMarginM = 0.25;
+// The truth map reaches this many cells past the floor and its walls.
+constexpr int kMarginCells = 2;
+constexpr double kMinCellM = 0.01;
+constexpr double kMaxCellM = 0.05;
 
 }  // namespace
 
 mapping::TrinaryMap TruthMap(const sim::World& world, double cell_m) {
   const Eigen::Vector2d size = world.floor().size;
   const double wall = world.walls() ? world.walls()->thickness : cell_m;
-  const Eigen::Vector2d origin(-kMarginM, -kMarginM);
-  const int width = static_cast<int>(std::ceil((size.x() + 2 * kMarginM) / cell_m));
-  const int height = static_cast<int>(std::ceil((size.y() + 2 * kMarginM) / cell_m));
+  const double margin = wall + kMarginCells * cell_m;
+  const Eigen::Vector2d origin(-margin, -margin);
+  const int width = static_cast<int>(std::ceil((size.x() + 2 * margin) / cell_m));
+  const int height = static_cast<int>(std::ceil((size.y() + 2 * margin) / cell_m));
   mapping::TrinaryMap map{core::GridGeometry(cell_m, origin, width, height), {}};
   map.cells.resize(map.geometry.CellCount(), mapping::CellState::kUnknown);
   for (int y = 0; y < height; ++y) {
@@ -38,9 +42,13 @@ mapping::TrinaryMap TruthMap(const sim::World& world, double cell_m) {
   return map;
 }
 
+double SimView::TruthCellM(const sim::World& world) {
+  return std::clamp(world.robot().radius / 2.0, kMinCellM, kMaxCellM);
+}
+
 SimView::SimView(const sim::World& world, const run::LiveViewOptions& options)
     : publisher_(options) {
-  publisher_.PublishMap(TruthMap(world, kTruthCellM));
+  publisher_.PublishMap(TruthMap(world, TruthCellM(world)));
   path_.push_back(world.robot().start);
   publisher_.PublishPath(path_);
   publisher_.PublishStatus(run::StatusJson("serving", 0, 0.0, "waiting for a client"));

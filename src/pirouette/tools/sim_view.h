@@ -13,13 +13,15 @@ namespace pirouette::tools {
 
 // The live view of `sim-serve --view`: what the simulator knows and a robot's
 // client does not. `/map` is the world's truth (free floor, occupied solids
-// and walls, at kTruthCellM), `/pirouette/path` the robot's true path,
+// and walls, at TruthCellM), `/pirouette/path` the robot's true path,
 // `/pirouette/floor` the camera's last frame as rendered (no floor drawn:
 // nothing is segmented here), `/pirouette/status` {"status": "serving",
 // "stops": frames served, ...}. Not thread-safe: call from the server's thread.
 class SimView {
  public:
-  static constexpr double kTruthCellM = 0.05;
+  // The truth map's cell: half the robot's radius, within 1 to 5 cm, so a
+  // small robot's world is drawn as finely as its map.
+  static double TruthCellM(const sim::World& world);
 
   // Listens at once; throws view::ViewError when it cannot.
   SimView(const sim::World& world, const run::LiveViewOptions& options);
