@@ -20,17 +20,12 @@ constexpr const char* kCameraFrame = "camera";
 // near 40 kB with the floor's edge still sharp.
 constexpr int kJpegQuality = 80;
 
-void SetHeader(std_msgs_msg_dds__Header_& header, const RosTime& stamp, const char* frame) {
-  header.stamp = stamp;
-  ros2::SetString(header.frame_id, frame);
-}
-
 }  // namespace
 
 ros2::Sample<nav_msgs_msg_dds__OccupancyGrid_> MapMessage(const mapping::TrinaryMap& map,
                                                           const RosTime& stamp) {
   ros2::Sample<nav_msgs_msg_dds__OccupancyGrid_> message;
-  SetHeader(message->header, stamp, kMapFrame);
+  ros2::SetHeader(message->header, stamp, kMapFrame);
   message->info.map_load_time = stamp;
   message->info.resolution = static_cast<float>(map.geometry.resolution());
   message->info.width = static_cast<std::uint32_t>(map.geometry.width());
@@ -58,10 +53,10 @@ ros2::Sample<nav_msgs_msg_dds__OccupancyGrid_> MapMessage(const mapping::Trinary
 ros2::Sample<nav_msgs_msg_dds__Path_> PathMessage(const std::vector<core::Pose2>& poses,
                                                   const RosTime& stamp) {
   ros2::Sample<nav_msgs_msg_dds__Path_> message;
-  SetHeader(message->header, stamp, kMapFrame);
+  ros2::SetHeader(message->header, stamp, kMapFrame);
   ros2::ResizeSequence(message->poses, poses.size());
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    SetHeader(message->poses._buffer[i].header, stamp, kMapFrame);
+    ros2::SetHeader(message->poses._buffer[i].header, stamp, kMapFrame);
     ros2::SetPose(message->poses._buffer[i].pose, poses[i]);
   }
   return message;
@@ -97,7 +92,7 @@ ros2::Sample<tf2_msgs_msg_dds__TFMessage_> MapToOdomMessage(const core::Pose2& m
                                                             const RosTime& stamp) {
   ros2::Sample<tf2_msgs_msg_dds__TFMessage_> tf;
   ros2::ResizeSequence(tf->transforms, 1);
-  SetHeader(tf->transforms._buffer[0].header, stamp, kMapFrame);
+  ros2::SetHeader(tf->transforms._buffer[0].header, stamp, kMapFrame);
   ros2::SetString(tf->transforms._buffer[0].child_frame_id, "odom");
   ros2::SetTransform(tf->transforms._buffer[0].transform, map_T_odom);
   return tf;
@@ -111,7 +106,7 @@ cv::Mat3b FloorPicture(const cv::Mat3b& bgr, const cv::Mat1b& floor_mask) {
 ros2::Sample<sensor_msgs_msg_dds__Image_> FloorImageMessage(const cv::Mat3b& picture,
                                                             const RosTime& stamp) {
   ros2::Sample<sensor_msgs_msg_dds__Image_> image;
-  SetHeader(image->header, stamp, kCameraFrame);
+  ros2::SetHeader(image->header, stamp, kCameraFrame);
   image->height = static_cast<std::uint32_t>(picture.rows);
   image->width = static_cast<std::uint32_t>(picture.cols);
   ros2::SetString(image->encoding, "bgr8");
@@ -126,7 +121,7 @@ ros2::Sample<sensor_msgs_msg_dds__CompressedImage_> FloorJpegMessage(const cv::M
   std::vector<std::uint8_t> jpeg;
   cv::imencode(".jpg", picture, jpeg, {cv::IMWRITE_JPEG_QUALITY, kJpegQuality});
   ros2::Sample<sensor_msgs_msg_dds__CompressedImage_> image;
-  SetHeader(image->header, stamp, kCameraFrame);
+  ros2::SetHeader(image->header, stamp, kCameraFrame);
   ros2::SetString(image->format, "jpeg");
   ros2::SetSequence(image->data, std::span<const std::uint8_t>(jpeg));
   return image;

@@ -36,6 +36,14 @@ class SeededRandom {
   std::mt19937_64 engine_;
 };
 
+// A standard normal draw by std::normal_distribution: reproducible for a seed
+// with one standard library (the simulated robots' noise), not across them as
+// SeededRandom is.
+inline double StandardNormal(std::mt19937_64& rng) {
+  std::normal_distribution<double> normal(0.0, 1.0);
+  return normal(rng);
+}
+
 // SplitMix64 (Steele, Lea & Flood 2014): a well-mixed 64-bit value of `x`,
 // for seeds derived from a seed.
 inline std::uint64_t SplitMix64(std::uint64_t x) {

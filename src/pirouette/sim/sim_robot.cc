@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "pirouette/sim/disc_cast.h"
+#include "pirouette/sim/seeded_random.h"
 
 namespace pirouette::sim {
 namespace {
@@ -15,11 +16,6 @@ namespace {
 constexpr double kDriveSpeed = 0.1;                    // metres a second
 constexpr double kTurnSpeed = std::numbers::pi / 2.0;  // radians a second (90°/s)
 constexpr double kCaptureTime = 0.05;                  // seconds a frame
-
-double StandardNormal(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  return normal(rng);
-}
 
 }  // namespace
 

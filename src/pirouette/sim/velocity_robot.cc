@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pirouette/sim/disc_cast.h"
+#include "pirouette/sim/seeded_random.h"
 
 namespace pirouette::sim {
 namespace {
@@ -11,11 +12,6 @@ namespace {
 // `current` moved toward `target` by at most `step`.
 double Approach(double current, double target, double step) {
   return current + std::clamp(target - current, -step, step);
-}
-
-double StandardNormal(std::mt19937_64& rng) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  return normal(rng);
 }
 
 }  // namespace

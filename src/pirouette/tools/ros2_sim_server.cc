@@ -30,11 +30,6 @@ constexpr const char* kOdomFrame = "odom";
 constexpr const char* kBaseFrame = "base_link";
 constexpr const char* kCameraFrame = "camera_optical_frame";
 
-void SetHeader(std_msgs_msg_dds__Header_& header, double time_s, const char* frame) {
-  header.stamp = ros2::RosTimeOfSeconds(time_s);
-  ros2::SetString(header.frame_id, frame);
-}
-
 // The camera model as ROS's camera_info has it (its distortion model and
 // coefficients in ROS's order, no rectification).
 void SetCameraInfo(sensor_msgs_msg_dds__CameraInfo_& info, const camera::CameraModel& camera) {
@@ -75,7 +70,7 @@ struct Ros2SimServer::Impl {
         image_writer(participant, "image_raw", ros2::kImageWriterQos),
         info_writer(participant, "camera_info", kCameraInfoQos) {
     ros2::Sample<sensor_msgs_msg_dds__CameraInfo_> info;
-    SetHeader(info->header, 0.0, kCameraFrame);
+    ros2::SetHeader(info->header, ros2::RosTimeOfSeconds(0.0), kCameraFrame);
     SetCameraInfo(*info, w.robot().camera);
     info_writer.Write(*info);
     PublishMotion();
@@ -103,7 +98,7 @@ struct Ros2SimServer::Impl {
   void PublishMotion() {
     const double t = robot.time_s();
     ros2::Sample<nav_msgs_msg_dds__Odometry_> odometry;
-    SetHeader(odometry->header, t, kOdomFrame);
+    ros2::SetHeader(odometry->header, ros2::RosTimeOfSeconds(t), kOdomFrame);
     ros2::SetString(odometry->child_frame_id, kBaseFrame);
     ros2::SetPose(odometry->pose.pose, robot.odometry());
     odometry->twist.twist.linear.x = robot.linear_mps();
@@ -112,7 +107,7 @@ struct Ros2SimServer::Impl {
 
     ros2::Sample<tf2_msgs_msg_dds__TFMessage_> tf;
     ros2::ResizeSequence(tf->transforms, 1);
-    SetHeader(tf->transforms._buffer[0].header, t, kOdomFrame);
+    ros2::SetHeader(tf->transforms._buffer[0].header, ros2::RosTimeOfSeconds(t), kOdomFrame);
     ros2::SetString(tf->transforms._buffer[0].child_frame_id, kBaseFrame);
     ros2::SetTransform(tf->transforms._buffer[0].transform, robot.odometry());
     tf_writer.Write(*tf);
@@ -134,11 +129,11 @@ struct Ros2SimServer::Impl {
     }
     const double t = robot.time_s();
     ros2::Sample<sensor_msgs_msg_dds__Image_> message;
-    SetHeader(message->header, t, kCameraFrame);
+    ros2::SetHeader(message->header, ros2::RosTimeOfSeconds(t), kCameraFrame);
     ros2::SetImage(*message, image);
     image_writer.Write(*message);
     ros2::Sample<sensor_msgs_msg_dds__CameraInfo_> info;
-    SetHeader(info->header, t, kCameraFrame);
+    ros2::SetHeader(info->header, ros2::RosTimeOfSeconds(t), kCameraFrame);
     SetCameraInfo(*info, world.robot().camera);
     info_writer.Write(*info);
     last_frame_s = t;

@@ -4,6 +4,12 @@
 
 namespace pirouette::robot::ros2 {
 
+void SetHeader(std_msgs_msg_dds__Header_& header, const builtin_interfaces_msg_dds__Time_& stamp,
+               std::string_view frame) {
+  header.stamp = stamp;
+  SetString(header.frame_id, frame);
+}
+
 void SetString(char*& field, std::string_view text) {
   dds_string_free(field);
   field = static_cast<char*>(dds_alloc(text.size() + 1));

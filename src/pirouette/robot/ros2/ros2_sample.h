@@ -42,6 +42,10 @@ class Sample {
 // Sets a message's string field (freeing what it held) to a copy of `text`.
 void SetString(char*& field, std::string_view text);
 
+// A message's header: its stamp and frame_id (a REP-105 frame name).
+void SetHeader(std_msgs_msg_dds__Header_& header, const builtin_interfaces_msg_dds__Time_& stamp,
+               std::string_view frame);
+
 // Sets a message's sequence field (freeing what it held) to a copy of
 // `values`; Seq is one of idlc's dds_sequence_* structs.
 template <class Seq, class V>
