@@ -80,7 +80,7 @@ void AddRobotAndOutputOptions(CLI::App* cmd, run::ExploreRequest& request,
                   "also write a run log (pirouette-log/1: camera.yaml, frames/, frames.csv) in "
                   "this new folder; `pirouette map --log DIR` maps it again");
   AddRos2PublishOptions(cmd, choices.ros2);
-  AddViewOptions(cmd, choices.view);
+  AddViewOptions(cmd, choices.view, true);
   AddQuietOption(cmd, request.quiet);
 }
 

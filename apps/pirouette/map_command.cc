@@ -35,7 +35,7 @@ Command AddMapCommand(CLI::App& parent) {
   AddMethodOption(cmd, request->method, kSegmentationMethods, "the log's");
   AddLocalizeOption(cmd, request->localize, "the log's, else none");
   AddRos2PublishOptions(cmd, *ros2);
-  AddViewOptions(cmd, *view);
+  AddViewOptions(cmd, *view, false);
   AddQuietOption(cmd, request->quiet);
   return {cmd, [request, ros2, view] {
             request->ros2_publish = Ros2PublishOf(*ros2);

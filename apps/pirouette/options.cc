@@ -246,7 +246,7 @@ std::optional<run::Ros2PublishOptions> Ros2PublishOf(const Ros2Choices& choices)
   return options;
 }
 
-void AddViewOptions(CLI::App* app, ViewChoices& choices) {
+void AddViewOptions(CLI::App* app, ViewChoices& choices, bool with_control) {
   app->add_option("--view", choices.endpoint,
                   "serve a live view of the run on [HOST:]PORT: a web page at http://HOST:PORT/ "
                   "(the map growing, the robot, its path and plan, the camera's last frame with "
@@ -255,9 +255,11 @@ void AddViewOptions(CLI::App* app, ViewChoices& choices) {
                   "only; 0.0.0.0 opens it to every network the machine is on: anyone who "
                   "reaches the port sees the run")
       ->type_name("[HOST:]PORT");
-  app->add_flag("--view-control", choices.control,
-                "let the live view pause, resume and stop the run and send the robot home "
-                "(default: it only watches and refuses every such request)");
+  if (with_control) {
+    app->add_flag("--view-control", choices.control,
+                  "let the live view pause, resume and stop the run and send the robot home "
+                  "(default: it only watches and refuses every such request)");
+  }
   app->add_option("--view-linger", choices.linger_s,
                   "seconds to keep serving the live view after the run ends, so a page opened "
                   "late still sees the end (ends sooner once every client has left; Ctrl-C ends "

@@ -114,7 +114,9 @@ struct ViewChoices {
   bool control = false;
   double linger_s = 0.0;
 };
-void AddViewOptions(CLI::App* app, ViewChoices& choices);
+// `with_control`: also --view-control (explore's only: a replay and the
+// simulator's server have no run to pause or send home).
+void AddViewOptions(CLI::App* app, ViewChoices& choices, bool with_control);
 
 // The live view the choices ask for (none without --view), its topics under
 // `ros_namespace`. Throws core::InputError naming the option at fault.

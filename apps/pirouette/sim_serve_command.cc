@@ -152,7 +152,7 @@ Command AddSimServeCommand(CLI::App& parent) {
   cmd->add_option("--ros-network", request->ros2_choices.network,
                   "with --ros2: let DDS leave this machine (an interface such as eth0 or its "
                   "IPv4 address, or auto); default loopback only");
-  AddViewOptions(cmd, request->view);
+  AddViewOptions(cmd, request->view, false);
   return {cmd, [request] {
             if (!request->ros2 && (!request->ros2_choices.ros_namespace.empty() ||
                                    !request->ros2_choices.network.empty())) {

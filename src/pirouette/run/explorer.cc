@@ -201,10 +201,12 @@ class Explorer {
       }
     }
     if (HomeRequested() && result_.status.empty()) {
-      ReturnHome();
+      const bool home = ReturnHome();
       if (result_.status.empty()) {
         result_.status = "interrupted";
-        result_.reason = "sent home from the live view";
+        result_.reason = home ? "sent home from the live view"
+                              : "sent home from the live view, but found no way home over known "
+                                "free floor";
       }
       return;
     }
@@ -240,7 +242,7 @@ class Explorer {
   void WaitWhilePaused() const {
     constexpr auto kPoll = std::chrono::milliseconds(50);
     while (options_.control != nullptr && options_.control->pause.load() &&
-           !options_.control->stop.load() && !options_.control->home.load() &&
+           !options_.control->stop.load() &&
            (options_.stop_requested == nullptr || !options_.stop_requested->load())) {
       std::this_thread::sleep_for(kPoll);
     }
@@ -534,14 +536,15 @@ class Explorer {
 
   // Back to the start over known-free floor: the distance transform from the
   // start's coarse cell alone, the unknown counted as blocked.
-  void ReturnHome() {
+  // True when the robot reached its start.
+  bool ReturnHome() {
     for (int attempt = 0; attempt < kReturnHomeAttempts; ++attempt) {
       explore::PlannerOptions planner_options;
       planner_options.robot_radius_m = radius_m_;
       explore::CoarseGrid grid = explore::PlanningGrid(mapper_.grid().ToTrinary(), planner_options);
       const std::optional<core::CellIndex> home = grid.geometry().CellAt(start_pose_.translation());
       const std::optional<core::CellIndex> here = grid.geometry().CellAt(Pose().translation());
-      if (!home || !here) return;
+      if (!home || !here) return false;
       for (int y = 0; y < grid.height(); ++y) {
         for (int x = 0; x < grid.width(); ++x) {
           if (grid.At({x, y}) == explore::CoarseCell::kGoal) {
@@ -552,17 +555,18 @@ class Explorer {
       grid.Set(*home, explore::CoarseCell::kGoal);
       const explore::DistanceField field = explore::ChamferDistanceTransform(grid);
       const std::optional<explore::Path> path = explore::SteepestDescent(grid, field, *here);
-      if (!path) return;
+      if (!path) return false;
       explore::Plan plan =
           explore::PlanAlong(grid, *path, Pose().translation(), /*enter_goal=*/true);
       plan.waypoints_world.push_back(start_pose_.translation());
       if (Follow(plan) == FollowOutcome::kReached) {
         Turn(core::NormalizeAngle(start_pose_.heading() - Pose().heading()));
         result_.path.push_back(Pose());
-        return;
+        return true;
       }
-      if (!result_.status.empty()) return;
+      if (!result_.status.empty()) return false;
     }
+    return false;
   }
 
   ExplorationProgress Progress() const {

@@ -65,7 +65,7 @@ LiveViewPublisher::LiveViewPublisher(const LiveViewOptions& options) : options_(
   server_ = std::make_unique<view::LiveServer>(server, Channels(options.ros_namespace));
 }
 
-LiveViewPublisher::~LiveViewPublisher() = default;
+LiveViewPublisher::~LiveViewPublisher() { server_.reset(); }
 
 std::string LiveViewPublisher::OnControl(view::ControlCommand command) {
   switch (command) {

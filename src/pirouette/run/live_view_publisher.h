@@ -32,7 +32,7 @@ class LiveViewPublisher : public RunWatcher {
  public:
   // Listens at once; throws view::ViewError when it cannot.
   explicit LiveViewPublisher(const LiveViewOptions& options);
-  ~LiveViewPublisher() override;
+  ~LiveViewPublisher() override;  // stops the server before the state its thread reads
   LiveViewPublisher(const LiveViewPublisher&) = delete;
   LiveViewPublisher& operator=(const LiveViewPublisher&) = delete;
 

@@ -41,6 +41,13 @@ constexpr std::size_t kMaxQueuedTexts = 64;
 // How long closing the server waits for clients to take their close frame.
 constexpr auto kCloseGrace = std::chrono::milliseconds(500);
 constexpr std::string_view kControlTopic = "/pirouette/control";
+// Connections (HTTP and WebSocket) served at once; more are closed at once,
+// so that a flood of sockets cannot take the run's file descriptors.
+constexpr int kMaxConnections = 64;
+// Subscriptions a client may hold: each channel a few times over is plenty.
+constexpr std::size_t kMaxSubscriptions = 64;
+// After an accept fails (out of file descriptors), the wait before the next.
+constexpr auto kAcceptRetry = std::chrono::milliseconds(100);
 
 struct Published {
   std::shared_ptr<const std::vector<std::uint8_t>> payload;
@@ -71,7 +78,18 @@ class LiveServer::Impl {
 
   void Start() {
     Accept();
-    thread_ = std::thread([this] { io_.run(); });
+    thread_ = std::thread([this] {
+      // A handler that throws (memory exhausted) costs its connection, not
+      // the run: the loop goes on until Stop.
+      while (true) {
+        try {
+          io_.run();
+          return;
+        } catch (const std::exception&) {
+          ++handler_failures_;
+        }
+      }
+    });
   }
 
   void Stop() {
@@ -123,6 +141,10 @@ class LiveServer::Impl {
   void CountRefused() { ++refused_; }
   const std::string& session_id() const { return session_id_; }
 
+  // HTTP and WebSocket sessions alive (declared before io_: the sessions
+  // io_'s pending handlers hold count down when io_ goes).
+  std::atomic<int> connections{0};
+
  private:
   void Listen();
   void Accept();
@@ -134,7 +156,10 @@ class LiveServer::Impl {
   std::map<std::uint32_t, std::size_t> index_of_;
   std::vector<std::optional<Published>> latest_;
   asio::io_context io_;
+  // Keeps run() going while nobody is connected, until Stop.
+  asio::executor_work_guard<asio::io_context::executor_type> work_{io_.get_executor()};
   tcp::acceptor acceptor_;
+  asio::steady_timer accept_retry_{io_};
   Endpoint endpoint_;
   std::set<std::shared_ptr<WsSession>> sessions_;
   std::string session_id_;
@@ -146,13 +171,19 @@ class LiveServer::Impl {
   std::atomic<std::uint64_t> messages_skipped_{0};
   std::atomic<std::uint64_t> http_requests_{0};
   std::atomic<std::uint64_t> refused_{0};
+  std::atomic<std::uint64_t> handler_failures_{0};
 };
 
 // One WebSocket client: its subscriptions, its advertised channels (with
 // --view-control), and what waits to be sent to it.
 class LiveServer::Impl::WsSession : public std::enable_shared_from_this<WsSession> {
  public:
-  WsSession(Impl& server, tcp::socket socket) : server_(server), ws_(std::move(socket)) {}
+  WsSession(Impl& server, tcp::socket socket) : server_(server), ws_(std::move(socket)) {
+    ++server_.connections;
+  }
+  ~WsSession() { --server_.connections; }
+  WsSession(const WsSession&) = delete;
+  WsSession& operator=(const WsSession&) = delete;
 
   void Accept(const http::request<http::string_body>& request) {
     ws_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
@@ -231,6 +262,9 @@ class LiveServer::Impl::WsSession : public std::enable_shared_from_this<WsSessio
       const std::optional<Published>* latest = server_.Latest(s.channel);
       if (latest == nullptr) {
         Refuse("subscribe: no channel " + std::to_string(s.channel));
+      } else if (subscriptions_.size() >= kMaxSubscriptions) {
+        Refuse("subscribe: a client may hold " + std::to_string(kMaxSubscriptions) +
+               " subscriptions");
       } else if (!subscriptions_.emplace(s.id, s.channel).second) {
         Refuse("subscribe: subscription id " + std::to_string(s.id) + " is already in use");
       } else if (latest->has_value()) {
@@ -255,6 +289,11 @@ class LiveServer::Impl::WsSession : public std::enable_shared_from_this<WsSessio
       if (c.topic != kControlTopic || c.encoding != "json") {
         Refuse("advertise: only " + std::string(kControlTopic) +
                " in json encoding is taken, not " + c.topic + " in " + c.encoding);
+        continue;
+      }
+      if (client_channels_.size() >= kMaxSubscriptions && !client_channels_.contains(c.id)) {
+        Refuse("advertise: a client may advertise " + std::to_string(kMaxSubscriptions) +
+               " channels");
         continue;
       }
       client_channels_[c.id] = c;
@@ -392,7 +431,12 @@ class LiveServer::Impl::WsSession : public std::enable_shared_from_this<WsSessio
 // of `/` to a WsSession.
 class LiveServer::Impl::HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(Impl& server, tcp::socket socket) : server_(server), stream_(std::move(socket)) {}
+  HttpSession(Impl& server, tcp::socket socket) : server_(server), stream_(std::move(socket)) {
+    ++server_.connections;
+  }
+  ~HttpSession() { --server_.connections; }
+  HttpSession(const HttpSession&) = delete;
+  HttpSession& operator=(const HttpSession&) = delete;
 
   void Read() {
     parser_.emplace();
@@ -537,8 +581,21 @@ void LiveServer::Impl::Listen() {
 
 void LiveServer::Impl::Accept() {
   acceptor_.async_accept(io_, [this](const ErrorCode& error, tcp::socket socket) {
-    if (error) return;  // closed
-    std::make_shared<HttpSession>(*this, std::move(socket))->Read();
+    if (error == asio::error::operation_aborted || !acceptor_.is_open()) return;  // Stop
+    if (error) {  // out of descriptors, say: try again in a while
+      accept_retry_.expires_after(kAcceptRetry);
+      accept_retry_.async_wait([this](const ErrorCode& e) {
+        if (!e) Accept();
+      });
+      return;
+    }
+    if (connections.load() >= kMaxConnections) {
+      ++refused_;
+      ErrorCode ignored;
+      socket.close(ignored);
+    } else {
+      std::make_shared<HttpSession>(*this, std::move(socket))->Read();
+    }
     Accept();
   });
 }
@@ -563,6 +620,7 @@ void LiveServer::Impl::Remove(const std::shared_ptr<WsSession>& session) {
 void LiveServer::Impl::CloseAll() {
   ErrorCode ignored;
   acceptor_.close(ignored);
+  accept_retry_.cancel();
   const std::set<std::shared_ptr<WsSession>> sessions = sessions_;
   for (const auto& session : sessions) session->Close();
 }

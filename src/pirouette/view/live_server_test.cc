@@ -199,6 +199,19 @@ TEST(LiveServerTest, AnswersAMalformedMessageAndServesOn) {
   EXPECT_TRUE(binary);
 }
 
+TEST(LiveServerTest, RefusesSubscriptionsPastItsBound) {
+  LiveServer server(Loopback(), TwoChannels());
+  Client client(server.endpoint().port);
+  client.ReadJson();
+  client.ReadJson();
+  json subscriptions = json::array();
+  for (int i = 0; i < 65; ++i) subscriptions.push_back({{"id", i}, {"channelId", 1}});
+  client.SendText(json{{"op", "subscribe"}, {"subscriptions", subscriptions}}.dump());
+  const json refused = client.ReadJson();
+  EXPECT_EQ(refused["level"], 2);
+  EXPECT_NE(refused["message"].get<std::string>().find("64 subscriptions"), std::string::npos);
+}
+
 TEST(LiveServerTest, ClosesAClientWhoseMessageIsTooLargeAndServesOthers) {
   LiveServerOptions options = Loopback();
   options.max_client_message_bytes = 1024;

@@ -309,7 +309,8 @@ function connect() {
     channels.clear();
     subscriptions.clear();
     $("controls").hidden = true;
-    const ended = state.status && state.status.status !== "running";
+    // paused and (sim-serve's) serving are not an end: connect again
+    const ended = state.status && !["running", "paused", "serving"].includes(state.status.status);
     note(ended ? "the run has ended; disconnected" : "disconnected; retrying…", !ended);
     if (!ended) setTimeout(connect, 1000);
   };
