@@ -52,6 +52,7 @@ void AddExplorationOptions(CLI::App* cmd, run::ExploreRequest& request, ExploreC
   AddLocalizeOption(cmd, choices.localize);
   AddCellOption(cmd, request.options.cell_m, "0.01 for a robot under 0.1 m radius, else 0.02");
   AddMaxRangeOption(cmd, request.options.max_range_m, "the paper's rule for the camera and --cell");
+  AddMaxMapOption(cmd, request.options.max_map_m, "ends the run (status stuck)");
   cmd->add_flag("--return-home", request.options.return_home,
                 "drive back to the start when the map is complete");
   AddOdometryOptions(cmd, choices.odometry_noise, choices.odometry_bias);

@@ -19,10 +19,11 @@ Command AddMapCommand(CLI::App& parent) {
       "writes one or a script on a real robot does; docs/run-log.md): each frame is segmented "
       "and its obstacle profile put in the occupancy grid at its odometry, in order, exactly as "
       "the run did. Writes OUT/map.yaml + map.pgm, map.png, map_colours.png and run.json (with the "
-      "map's "
-      "evaluation when the log's world, or --world, is known). The settings default to the "
-      "log's own (log.yaml).\n"
-      "Exit: 0 done, 1 failed, 2 bad input.\n"
+      "map's evaluation when the log's world, or --world, is known). The settings default to the "
+      "log's own (log.yaml). A log cut short (a run killed while it recorded: frames.csv's last "
+      "row without its line end, a frame missing or cut) maps every frame before the cut, says "
+      "where it stopped, and ends with status `truncated`.\n"
+      "Exit: 0 done (also for a cut log), 1 failed, 2 bad input.\n"
       "  example: pirouette explore --world worlds/soccer_field.yaml --record run1 && "
       "pirouette map --log run1 --out map1");
   cmd->add_option("--log", request->log_dir, "the run log's folder")->required();
@@ -32,6 +33,7 @@ Command AddMapCommand(CLI::App& parent) {
   AddRadiusOption(cmd, request->radius_m, "the log's robot.radius");
   AddCellOption(cmd, request->cell_m, "the log's");
   AddMaxRangeOption(cmd, request->max_range_m, "the log's, else the paper's rule");
+  AddMaxMapOption(cmd, request->max_map_m, "ends the mapping there (status truncated)");
   AddMethodOption(cmd, request->method, kSegmentationMethods, "the log's");
   AddLocalizeOption(cmd, request->localize, "the log's, else none");
   AddRos2PublishOptions(cmd, *ros2);
@@ -47,6 +49,10 @@ Command AddMapCommand(CLI::App& parent) {
               std::fprintf(stderr, "map: %d frames in %.1f s; map in %s/map.yaml\n",
                            report.result.frames, report.result.wall_time_s,
                            request->out_dir.c_str());
+            }
+            if (report.result.status == "truncated") {
+              // A warning, not a failure: the map of every whole frame is written.
+              std::fprintf(stderr, "map: the log stops short: %s\n", report.result.reason.c_str());
             }
             if (report.result.status == "interrupted") {
               throw std::runtime_error("interrupted; the map of the frames before is in " +

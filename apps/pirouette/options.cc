@@ -120,6 +120,16 @@ CLI::Option* AddMaxRangeOption(CLI::App* app, std::optional<double>& max_range_m
       MaxRangeHelp(default_note));
 }
 
+CLI::Option* AddMaxMapOption(CLI::App* app, double& max_map_m, std::string_view ending) {
+  return app
+      ->add_option("--max-map-m", max_map_m,
+                   "the longest side the map may grow to, metres (default: 4096 cells, 41 m at "
+                   "1 cm, 82 m at 2 cm); a frame that would make it larger (odometry that "
+                   "jumped, a floor larger than this) " +
+                       std::string(ending) + ", with the map so far")
+      ->check(CLI::PositiveNumber);
+}
+
 CLI::Option* AddRadiusOption(CLI::App* app, double& radius_m, std::string_view default_note) {
   return app->add_option("--radius", radius_m,
                          WithDefault("the robot's radius, metres", default_note));

@@ -62,6 +62,8 @@ CLI::Option* AddCellOption(CLI::App* app, double& cell_m, std::string_view defau
 // --max-range: how far the obstacle profiles are read, metres. Either a
 // value whose 0 means the default, or an optional left empty unless given.
 CLI::Option* AddMaxRangeOption(CLI::App* app, double& max_range_m, std::string_view default_note);
+// --max-map-m: the longest side the map may grow to.
+CLI::Option* AddMaxMapOption(CLI::App* app, double& max_map_m, std::string_view ending);
 CLI::Option* AddMaxRangeOption(CLI::App* app, std::optional<double>& max_range_m,
                                std::string_view default_note);
 

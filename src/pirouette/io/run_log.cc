@@ -207,19 +207,32 @@ RunLog ReadRunLog(const std::string& dir) {
   RunLog log{dir,
              fs::exists(root / "log.yaml") ? ReadInfo((root / "log.yaml").string()) : RunLogInfo{},
              io::LoadCameraFile((root / "camera.yaml").string()),
+             {},
              {}};
   const std::string csv_path = (root / "frames.csv").string();
   std::ifstream csv(csv_path);
   if (!csv) throw core::InputError(csv_path, 0, "", "no such file");
   std::string line;
   int line_no = 1;
-  if (!std::getline(csv, line) || line.rfind("index,time_s,x,y,heading_deg", 0) != 0) {
+  if (std::getline(csv, line) && csv.eof()) {
+    throw core::InputError(csv_path, 1, "header",
+                           "holds no frames: the log was cut inside its header line");
+  }
+  if (!csv || line.rfind("index,time_s,x,y,heading_deg", 0) != 0) {
     throw core::InputError(
         csv_path, 1, "header",
         std::string("must start with index,time_s,x,y,heading_deg (") + kHeader + ")");
   }
   while (std::getline(csv, line)) {
     ++line_no;
+    if (csv.eof()) {
+      // Every row the writer appends ends in a line end: one without it is
+      // where the writing stopped (a run killed, a copy cut short), and may
+      // hold a number cut in two that would read as another number.
+      log.cut = fmt::format("{} line {}: a partial row (no line end): the log was cut there",
+                            csv_path, line_no);
+      break;
+    }
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
     const std::vector<std::string> f = SplitCsv(line);
@@ -254,7 +267,10 @@ RunLog ReadRunLog(const std::string& dir) {
     }
     log.rows.push_back(std::move(row));
   }
-  if (log.rows.empty()) throw core::InputError(csv_path, 0, "", "holds no frames");
+  if (log.rows.empty()) {
+    throw core::InputError(csv_path, 0, "",
+                           log.cut.empty() ? "holds no frames" : "holds no whole row: " + log.cut);
+  }
   return log;
 }
 

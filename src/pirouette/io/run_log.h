@@ -53,6 +53,10 @@ struct RunLog {
   RunLogInfo info;
   camera::CameraModel camera;
   std::vector<RunLogRow> rows;
+  // Where the log stops short, when it does: frames.csv's last line without
+  // its line end (a run killed while it wrote it); the rows before it are
+  // whole and in `rows`. Empty for a whole log.
+  std::string cut;
 };
 
 // The motions column for a list of motions.
@@ -91,8 +95,9 @@ class RunLogWriter {
 };
 
 // Reads a run log's log.yaml (optional: without it info is all zero),
-// camera.yaml and frames.csv. Throws core::InputError naming the file, line
-// and field of anything missing or malformed.
+// camera.yaml and frames.csv. A last row without its line end is a cut, not
+// an error (RunLog::cut). Throws core::InputError naming the file, line and
+// field of anything missing or malformed, and for a log without a whole row.
 RunLog ReadRunLog(const std::string& dir);
 
 // The frame of a row, with its odometry and time. Throws core::InputError

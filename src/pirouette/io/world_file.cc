@@ -456,10 +456,23 @@ struct Obstacles {
   std::vector<GridItem> grids;
 };
 
+// Limits that keep a world within the machine's memory: the renderer's mesh,
+// the ray caster's index and the truth grow with the solids, the evaluation's
+// truth with the floor. The largest world shipped or generated has a few
+// thousand solids (a map_server twin merged into boxes) on a 30 m floor.
+constexpr std::size_t kMaxObstacleItems = 100000;
+constexpr std::size_t kMaxSolids = 200000;
+constexpr double kMaxFloorSideM = 1000.0;
+
 Obstacles ReadObstacles(const std::string& file, const YamlMap& map) {
   Obstacles out;
   if (const auto field = map.Optional("obstacles")) {
     const std::vector<YamlField> items = ReadList(file, *field, "a list of obstacles");
+    if (items.size() > kMaxObstacleItems) {
+      ThrowInputError(file, *field,
+                      fmt::format("{} obstacles; a world may have at most {}", items.size(),
+                                  kMaxObstacleItems));
+    }
     for (std::size_t i = 0; i < items.size(); ++i) {
       if (IsChessboardItem(items[i])) {
         out.chessboards.push_back(ReadChessboard(file, Index(items[i], i)));
@@ -541,7 +554,13 @@ sim::World ParseWorld(const YAML::Node& node, const std::string& file) {
   const YamlField name_field = map.Required("name");
   std::string name = ReadString(file, name_field);
   if (name.empty()) ThrowInputError(file, name_field, "must not be empty");
-  const sim::Floor floor = ReadFloor(file, map.Required("floor"));
+  const YamlField floor_field = map.Required("floor");
+  const sim::Floor floor = ReadFloor(file, floor_field);
+  if (floor.size.maxCoeff() > kMaxFloorSideM) {
+    ThrowInputError(file, floor_field,
+                    fmt::format("floor.size: {} x {} m; a side may be at most {} m", floor.size.x(),
+                                floor.size.y(), kMaxFloorSideM));
+  }
   std::optional<sim::BoundaryWalls> walls;
   if (const auto field = map.Optional("walls")) walls = ReadWalls(file, *field);
   Obstacles obstacles = ReadObstacles(file, map);
@@ -557,6 +576,12 @@ sim::World ParseWorld(const YAML::Node& node, const std::string& file) {
       obstacles.solids.push_back(std::move(solid));
       obstacles.items.push_back(grid.item);
       obstacles.lines.push_back(grid.line);
+    }
+    if (obstacles.solids.size() > kMaxSolids) {
+      ThrowInputError(file, grid.line, fmt::format("obstacles[{}]", grid.item),
+                      fmt::format("the map makes more than {} blocks with the obstacles before "
+                                  "it; crop the map or coarsen its cells",
+                                  kMaxSolids));
     }
   }
 

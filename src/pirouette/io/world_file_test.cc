@@ -767,5 +767,37 @@ TEST(WorldFileTest, AGridStandsTheMapsCellsUpAsBlocks) {
   }
 }
 
+// Worlds too large for the machine's memory are refused, naming the field:
+// a floor of kilometres; a map whose cells make more blocks than any world
+// needs (a checkerboard of 700 x 700 cells: 245,000 blocks no run merges).
+TEST(WorldFileTest, RefusesWorldsTooLargeForMemory) {
+  const TempDir dir;
+  dir.Write("cam.yaml", kWorldCamera);
+  const core::InputError floor = ExpectInputError([&] {
+    LoadWorldFile(dir.Write("floor.yaml", EditedWorld("size: [2.0, 1.5]", "size: [2000, 1.5]")));
+  });
+  EXPECT_EQ(floor.field().substr(0, 5), "floor");
+  EXPECT_NE(std::string(floor.what()).find("at most 1000 m"), std::string::npos) << floor.what();
+
+  constexpr int kSide = 700;
+  std::string pgm = "P5\n" + std::to_string(kSide) + " " + std::to_string(kSide) + "\n255\n";
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) pgm += static_cast<char>((x + y) % 2 == 0 ? 0 : 254);
+  }
+  dir.Write("maps/checker.pgm", pgm);
+  dir.Write("maps/checker.yaml",
+            "image: checker.pgm\nresolution: 0.002\norigin: [0, 0, 0]\nnegate: 0\n"
+            "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  std::string world = kWorld;
+  const std::size_t from = world.find("obstacles:");
+  world.replace(from, world.find("light:") - from,
+                "obstacles:\n  - grid: {map: maps/checker.yaml, height: 0.3, colour: [1, 2, 3]}\n");
+  const core::InputError blocks =
+      ExpectInputError([&] { LoadWorldFile(dir.Write("blocks.yaml", world)); });
+  EXPECT_EQ(blocks.field(), "obstacles[0]");
+  EXPECT_NE(std::string(blocks.what()).find("more than 200000 blocks"), std::string::npos)
+      << blocks.what();
+}
+
 }  // namespace
 }  // namespace pirouette::io

@@ -1,5 +1,7 @@
 #include "pirouette/mapping/occupancy_grid.h"
 
+#include <cstdio>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -106,6 +108,13 @@ void OccupancyGrid::SetFree(const core::CellIndex& c) {
   cell.stamp = frame_;
 }
 
+void OccupancyGrid::LimitSide(int max_side_cells) {
+  if (max_side_cells < 1 || max_side_cells > kMaxSideCells) {
+    throw std::invalid_argument("OccupancyGrid::LimitSide: needs 1..kMaxSideCells cells");
+  }
+  max_side_cells_ = max_side_cells;
+}
+
 void OccupancyGrid::GrowToCover(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
   if (!lo.allFinite() || !hi.allFinite() || !(lo.array() <= hi.array()).all()) {
     throw std::invalid_argument("OccupancyGrid::GrowToCover: needs finite lo <= hi");
@@ -115,7 +124,7 @@ void OccupancyGrid::GrowToCover(const Eigen::Vector2d& lo, const Eigen::Vector2d
   const Eigen::Vector2d cells_hi = (hi - geometry_.origin()) / resolution;
   const double limit = 4.0 * kMaxSideCells;  // keeps the casts below defined
   if ((cells_lo.array().abs() > limit).any() || (cells_hi.array().abs() > limit).any()) {
-    throw std::length_error("OccupancyGrid::GrowToCover: the grid would grow too large");
+    throw MapTooLarge("the map would grow thousands of kilometres");
   }
   // The cells the rectangle plus the margin spans, in the current indices.
   const int x0 = static_cast<int>(std::floor(cells_lo.x())) - kGrowMarginCells;
@@ -130,14 +139,28 @@ void OccupancyGrid::GrowToCover(const Eigen::Vector2d& lo, const Eigen::Vector2d
   const auto grow = [](int lacking, int chunk_cells) {
     return lacking > 0 ? lacking + chunk_cells : 0;
   };
-  const int left = grow(-x0, std::max(chunk, width));
-  const int right = grow(x1 - (width - 1), std::max(chunk, width));
-  const int bottom = grow(-y0, std::max(chunk, height));
-  const int top = grow(y1 - (height - 1), std::max(chunk, height));
+  int left = grow(-x0, std::max(chunk, width));
+  int right = grow(x1 - (width - 1), std::max(chunk, width));
+  int bottom = grow(-y0, std::max(chunk, height));
+  int top = grow(y1 - (height - 1), std::max(chunk, height));
+  // Near the limit, grow by what is lacking only.
+  if (static_cast<long>(width) + left + right > max_side_cells_) {
+    left = grow(-x0, 0);
+    right = grow(x1 - (width - 1), 0);
+  }
+  if (static_cast<long>(height) + bottom + top > max_side_cells_) {
+    bottom = grow(-y0, 0);
+    top = grow(y1 - (height - 1), 0);
+  }
   const long new_width = static_cast<long>(width) + left + right;
   const long new_height = static_cast<long>(height) + bottom + top;
-  if (new_width > kMaxSideCells || new_height > kMaxSideCells) {
-    throw std::length_error("OccupancyGrid::GrowToCover: the grid would grow too large");
+  if (new_width > max_side_cells_ || new_height > max_side_cells_) {
+    char what[160];
+    std::snprintf(what, sizeof what,
+                  "the map would grow to %.0f x %.0f m, past its limit of %.0f m a side",
+                  static_cast<double>(new_width) * resolution,
+                  static_cast<double>(new_height) * resolution, max_side_cells_ * resolution);
+    throw MapTooLarge(what);
   }
 
   const core::GridGeometry grown(resolution,

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "pirouette/core/grid_geometry.h"
@@ -70,6 +72,14 @@ enum class CellUpdate : std::uint8_t {
   kBlind,  // L ← min(logit(blind), clamp max) if the cell was never touched, see OccupancyOptions
 };
 
+// A map that would grow past the side it is allowed (OccupancyGrid::LimitSide,
+// a run's --max-map-m): what a robot whose odometry jumped a kilometre would
+// make, refused before it takes the machine's memory.
+class MapTooLarge : public std::length_error {
+ public:
+  explicit MapTooLarge(const std::string& what) : std::length_error(what) {}
+};
+
 // An occupancy grid in clamped log-odds (OctoMap): per cell L = log(p/(1-p)),
 // 0 = unknown (p = 0.5), and a mark of whether any reading ever touched it
 // (never NaN as a marker). Updates come in frames: between two BeginFrame()
@@ -122,12 +132,16 @@ class OccupancyGrid {
   // and world position (the origin moves by whole cells); a no-op when it
   // already does. A side that falls short grows by what it lacks plus
   // max(1 m, the grid's size along that axis), so that growth is rare and
-  // amortised. Throws std::invalid_argument unless lo <= hi and both are
-  // finite, std::length_error when a side would pass kMaxSideCells.
+  // amortised, but never past the side limit (LimitSide). Throws
+  // std::invalid_argument unless lo <= hi and both are finite, MapTooLarge
+  // (a std::length_error) when a side would pass the limit.
   void GrowToCover(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi);
   static constexpr int kGrowMarginCells = 2;
   static constexpr double kGrowChunkM = 1.0;
   static constexpr int kMaxSideCells = 1 << 15;
+  // The most cells a side may grow to: 1..kMaxSideCells (the default); copies keep it.
+  void LimitSide(int max_side_cells);
+  int max_side_cells() const { return max_side_cells_; }
 
   // Starts a new frame: from now on each cell takes at most one update until
   // the next call.
@@ -181,6 +195,7 @@ class OccupancyGrid {
   }
 
   core::GridGeometry geometry_;
+  int max_side_cells_ = kMaxSideCells;
   OccupancyOptions options_;
   // The sensor model in log-odds, built once from the checked options.
   float hit_;

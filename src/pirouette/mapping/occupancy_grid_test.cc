@@ -239,6 +239,22 @@ TEST(OccupancyGrid, GrowthRefusesBadRectangles) {
   EXPECT_EQ(grid.geometry().width(), 10);
 }
 
+// A limited grid grows in chunks while they fit, then by what is lacking
+// only, and refuses (MapTooLarge, nothing changed) a cover past its limit.
+TEST(OccupancyGrid, GrowthStopsAtTheSideLimit) {
+  OccupancyGrid grid = SmallGrid();
+  grid.LimitSide(150);
+  grid.GrowToCover({0.0, 0.0}, {1.3, 0.05});
+  EXPECT_LE(grid.geometry().width(), 150);
+  EXPECT_GE(grid.geometry().width(), 133);
+  const GridGeometry before = grid.geometry();
+  EXPECT_THROW(grid.GrowToCover({0.0, 0.0}, {1.6, 0.05}), MapTooLarge);
+  EXPECT_EQ(grid.geometry(), before);
+  const OccupancyGrid copy = grid;
+  EXPECT_EQ(copy.max_side_cells(), 150);
+  EXPECT_THROW(grid.LimitSide(0), std::invalid_argument);
+}
+
 TEST(OccupancyGrid, ExploredMapDecidesEveryTouchedCell) {
   OccupancyGrid grid = SmallGrid();
   Repeat(grid, {0, 0}, CellUpdate::kBlind, 1);  // 0.6: unknown, leaning occupied

@@ -60,6 +60,9 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
   if (options.max_range_m < 0.0 || !std::isfinite(options.max_range_m)) {
     throw core::InputError("--max-range", 0, "", "must be a number > 0 (metres)");
   }
+  if (options.max_map_m < 0.0 || !std::isfinite(options.max_map_m)) {
+    throw core::InputError("--max-map-m", 0, "", "must be a number > 0 (metres)");
+  }
   if (options.odometry_noise) core::CheckOdometryNoise(*options.odometry_noise);
 }
 

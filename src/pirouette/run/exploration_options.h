@@ -69,6 +69,10 @@ struct ExplorationOptions {
   // The range readings are trusted to; 0: the paper's rule for the camera
   // and the cell (camera::MaxRange).
   double max_range_m = 0.0;
+  // The longest side the map may grow to, metres; 0: kDefaultMaxMapCells
+  // cells (frame_mapper.h). A map that would pass it ends the run with status
+  // "stuck" and the map so far.
+  double max_map_m = 0.0;
   // The sensor model: kExplorationOccupancy.
   mapping::OccupancyOptions occupancy = kExplorationOccupancy;
   // Drive back to the start at the end.

@@ -27,6 +27,7 @@
 #include "pirouette/io/world_file.h"
 #include "pirouette/robot/remote_robot.h"
 #include "pirouette/robot/ros2/ros2_robot.h"
+#include "pirouette/run/checkpoint_writer.h"
 #include "pirouette/run/progress_line.h"
 #include "pirouette/run/ros2_camera.h"
 #include "pirouette/run/run_watchers.h"
@@ -44,16 +45,23 @@ double Round(double v, double unit) { return std::round(v / unit) * unit; }
 
 }  // namespace
 
-nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& result,
-                       const nlohmann::json& eval) {
+nlohmann::json RunJsonBase(const ExploreRequest& request) {
   nlohmann::json run;
   run["format"] = "pirouette-run/1";
   if (!request.world_path.empty()) run["world"] = request.world_path;
   run["seed"] = request.options.seed;
-  run["status"] = result.status;
-  if (!result.reason.empty()) run["reason"] = result.reason;
   run["planner"] = PlannerKindName(request.options.planner);
   run["method"] = vision::MaskSourceName(request.options.method);
+  run["localize"] = LocalizeKindName(request.options.localize);
+  if (!request.robot_url.empty()) run["robot"] = request.robot_url;
+  return run;
+}
+
+nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& result,
+                       const nlohmann::json& eval) {
+  nlohmann::json run = RunJsonBase(request);
+  run["status"] = result.status;
+  if (!result.reason.empty()) run["reason"] = result.reason;
   run["moves"] = result.moves;
   run["turns"] = result.turns;
   run["pirouettes"] = result.pirouettes;
@@ -66,7 +74,6 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
                          {"update", Round(result.times.update_s, 1e-4)},
                          {"plan", Round(result.times.plan_s, 1e-4)},
                          {"localize", Round(result.times.localize_s, 1e-4)}};
-  run["localize"] = LocalizeKindName(request.options.localize);
   if (request.options.localize == LocalizeKind::kGraph && result.graph) {
     double mean = 0.0;
     double most = 0.0;
@@ -118,7 +125,6 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   }
   run["blocked_looks"] = result.blocked_looks;
   run["backups"] = result.backups;
-  if (!request.robot_url.empty()) run["robot"] = request.robot_url;
   if (!eval.is_null()) run["eval"] = eval;
   return run;
 }
@@ -322,6 +328,45 @@ class Recorder {
   std::string error_;
 };
 
+// The run's checkpoints (CheckpointWriter) from the observer's snapshots. A
+// checkpoint that cannot be written (a full disk) stops checkpointing, not
+// the run, as the recorder does; run.json says why.
+class Checkpoints {
+ public:
+  Checkpoints(const std::string& out_dir, const nlohmann::json& run_base)
+      : writer_(out_dir, run_base) {}
+
+  void Watch(ExplorationObserver& observer) {
+    auto before = observer.on_snapshot;
+    observer.on_snapshot = [this, before](const RunSnapshot& snapshot) {
+      if (before) before(snapshot);
+      writer_.Publish(snapshot);
+    };
+  }
+
+  // Waits for the last checkpoint to be written (before the final outputs
+  // replace it).
+  void Finish() { error_ = writer_.Finish(); }
+
+  // Their count and cost (and error) in the final run.json.
+  void Report(nlohmann::json& run) const {
+    const CheckpointCost& cost = writer_.cost();
+    const auto per = [](double total_s, int n) {
+      return n > 0 ? Round(1e3 * total_s / n, 1e-3) : 0.0;
+    };
+    run["checkpoints"] = {{"taken", cost.taken},
+                          {"written", cost.written},
+                          {"prepare_ms", per(cost.prepare_s, cost.taken)},
+                          {"write_ms", per(cost.write_s, cost.written)},
+                          {"max_write_ms", Round(1e3 * cost.max_write_s, 1e-3)}};
+    if (!error_.empty()) run["checkpoint_error"] = error_;
+  }
+
+ private:
+  CheckpointWriter writer_;
+  std::string error_;
+};
+
 nlohmann::json OdometryNoiseJson(const core::OdometryNoise& noise) {
   return {{"translation", noise.translation},
           {"rotation", noise.rotation},
@@ -380,6 +425,13 @@ ExploreReport RunExplore(const ExploreRequest& request) {
     };
   }
   watchers.Watch(observer);
+  nlohmann::json run_base = RunJsonBase(request);
+  if (request.robot_url.empty()) {
+    run_base["odometry_noise"] =
+        OdometryNoiseJson(options.odometry_noise.value_or(world->robot().odometry_noise));
+  }
+  Checkpoints checkpoints(out.string(), run_base);
+  checkpoints.Watch(observer);
   std::optional<Recorder> recorder;
   if (!request.record_dir.empty())
     recorder.emplace(request, robot_info, options.graph.odometry).Watch(observer);
@@ -389,6 +441,7 @@ ExploreReport RunExplore(const ExploreRequest& request) {
                            : ExploreRemote(*remote, request, options, robot_info, observer),
                        {},
                        {}};
+  checkpoints.Finish();
   if (recorder) {
     recorder->Close();
     report.record_error = recorder->error();
@@ -398,10 +451,9 @@ ExploreReport RunExplore(const ExploreRequest& request) {
       RunJson(request, report.result,
               world ? eval::MapEvaluationToJson(eval::EvaluateMap(map, *world)) : nlohmann::json());
   if (!report.record_error.empty()) report.run["record_error"] = report.record_error;
-  if (request.robot_url.empty()) {
-    report.run["odometry_noise"] =
-        OdometryNoiseJson(options.odometry_noise.value_or(world->robot().odometry_noise));
-  }
+  if (run_base.contains("odometry_noise"))
+    report.run["odometry_noise"] = run_base["odometry_noise"];
+  checkpoints.Report(report.run);
   io::WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
   watchers.Finish(map, report.result, request.options.stop_requested);

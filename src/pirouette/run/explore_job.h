@@ -59,7 +59,9 @@ struct ExploreReport {
 // Explores the world of the request and writes, atomically, OUT/map.yaml,
 // OUT/map.pgm, OUT/map.png, OUT/map_colours.png, OUT/run.json (SPEC.md) and with `video`
 // OUT/explore.mp4, and with `record_dir` a run log; the outputs are written whatever the status, so
-// an interrupted or stuck run keeps its map. Progress goes to standard error unless `quiet`. Throws
+// an interrupted or stuck run keeps its map. After every stop it checkpoints OUT/map.pgm,
+// OUT/map.yaml and OUT/run.json (`status: running`; CheckpointWriter), so that a run killed at any
+// moment keeps its map up to its last stop. Progress goes to standard error unless `quiet`. Throws
 // core::InputError for a bad world or option.
 ExploreReport RunExplore(const ExploreRequest& request);
 
@@ -73,6 +75,10 @@ mapping::OccupancyGrid SeenPart(const mapping::OccupancyGrid& grid);
 // the result's colour sightings, io::WriteColourMap), atomically; returns
 // the map written.
 mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result);
+
+// The fields of run.json known before the run: format, world, seed, planner,
+// method, localize, robot.
+nlohmann::json RunJsonBase(const ExploreRequest& request);
 
 // run.json (SPEC.md's `pirouette-run/1`) for a result; `eval` is the map's
 // evaluation object (null: none, no world).

@@ -54,7 +54,8 @@ class Explorer {
                             : std::nullopt,
                         options.localize == LocalizeKind::kGraph
                             ? std::optional<localize::GraphTrackerOptions>(options.graph)
-                            : std::nullopt},
+                            : std::nullopt,
+                        options.max_map_m},
             std::move(mask), robot.Odometry()),
         look_(mapper_.look_ahead()),
         start_(Clock::now()) {
@@ -73,6 +74,10 @@ class Explorer {
     try {
       Loop();
     } catch (const robot::RobotError& e) {
+      result_.status = "stuck";
+      result_.reason = e.what();
+    } catch (const mapping::MapTooLarge& e) {
+      // The frame was refused before it changed the map: the map so far stands.
       result_.status = "stuck";
       result_.reason = e.what();
     }

@@ -1,5 +1,7 @@
 #include "pirouette/run/frame_mapper.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -13,15 +15,25 @@ namespace pirouette::run {
 namespace {
 
 // kInitialSideM square around the start, on whole cells (the grid grows as
-// readings need it).
-mapping::OccupancyGrid InitialGrid(const core::Pose2& start, double cell_m,
-                                   const mapping::OccupancyOptions& occupancy) {
+// readings need it, never past the setup's limit with room for the range on
+// both sides and the graph's corrections: FrameMapper::CheckExtent refuses
+// frames before the grid would).
+mapping::OccupancyGrid InitialGrid(const core::Pose2& start, const MapperSetup& setup) {
   constexpr double kInitialSideM = 2.0;
   constexpr double kHalf = 0.5 * kInitialSideM;
+  constexpr double kSlackM = 2.0;
+  const double cell_m = setup.cell_m;
   const Eigen::Vector2d lo(std::floor((start.x() - kHalf) / cell_m) * cell_m,
                            std::floor((start.y() - kHalf) / cell_m) * cell_m);
-  return mapping::OccupancyGrid(
-      core::GridGeometry::Covering(cell_m, lo, Eigen::Vector2d(2 * kHalf, 2 * kHalf)), occupancy);
+  mapping::OccupancyGrid grid(
+      core::GridGeometry::Covering(cell_m, lo, Eigen::Vector2d(2 * kHalf, 2 * kHalf)),
+      setup.occupancy);
+  const double side_cells =
+      std::ceil((MaxMapSide(setup) + 2.0 * setup.max_range_m + kSlackM) / cell_m);
+  grid.LimitSide(
+      static_cast<int>(std::clamp(side_cells, static_cast<double>(grid.geometry().width()),
+                                  static_cast<double>(mapping::OccupancyGrid::kMaxSideCells))));
+  return grid;
 }
 
 // The colours of a frame's hits, in the robot's frame.
@@ -49,7 +61,7 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
       look_(explore::LookAheadOptions{setup.radius_m, camera::NearRange(ipm_), setup.max_range_m,
                                       setup.cell_m}),
       start_(start),
-      grid_(InitialGrid(start, setup.cell_m, setup.occupancy)) {
+      grid_(InitialGrid(start, setup)) {
   if (setup.graph) {
     graph_.emplace(*setup.graph);
     view_extractor_.emplace(ipm_, setup.max_range_m * setup.graph->stop.view_range_factor);
@@ -59,7 +71,29 @@ FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core
   }
 }
 
+double MaxMapSide(const MapperSetup& setup) {
+  return setup.max_map_m > 0.0 ? setup.max_map_m : kDefaultMaxMapCells * setup.cell_m;
+}
+
+void FrameMapper::CheckExtent(const core::Pose2& odometry) {
+  const Eigen::Vector2d reach = Eigen::Vector2d::Constant(setup_.max_range_m);
+  const Eigen::Vector2d lo = extent_lo_.cwiseMin(odometry.translation() - reach);
+  const Eigen::Vector2d hi = extent_hi_.cwiseMax(odometry.translation() + reach);
+  const double side = (hi - lo).maxCoeff();
+  const double limit = MaxMapSide(setup_);
+  if (!std::isfinite(side) || side > limit) {
+    throw mapping::MapTooLarge(fmt::format(
+        "the map would grow to {:.0f} m a side with the frame at odometry ({:.2f}, {:.2f}), past "
+        "its limit of {:.0f} m (--max-map-m): the odometry jumped, or the floor is larger than "
+        "the limit",
+        side, odometry.x(), odometry.y(), limit));
+  }
+  extent_lo_ = lo;
+  extent_hi_ = hi;
+}
+
 FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
+  CheckExtent(frame.odometry);
   Seen seen;
   {
     run::StageTimer timer(perceive_s_);
@@ -172,7 +206,7 @@ void FrameMapper::Rebuild(bool from_stop_start) {
     grid_ = *before_stop_;
     Replay(stop_first_event_);
   } else {
-    grid_ = InitialGrid(start_, setup_.cell_m, setup_.occupancy);
+    grid_ = InitialGrid(start_, setup_);
     Replay(0);
   }
   for (std::size_t i = 0; i < colour_frames_.size(); ++i) {

@@ -32,7 +32,17 @@ struct MapperSetup {
   std::optional<localize::TrackerOptions> tracking;
   // Graph SLAM over the stops (localize::GraphTracker), instead of `tracking`.
   std::optional<localize::GraphTrackerOptions> graph;
+  // The longest side the map may grow to, metres; 0: kDefaultMaxMapCells cells.
+  double max_map_m = 0.0;
 };
+
+// The map's longest side by default, in cells: 41 m at 1 cm, 82 m at 2 cm,
+// larger than any floor the explorer has mapped (docs/measurements.md), and a
+// grid of 4096² cells takes 128 MiB (8 bytes a cell).
+inline constexpr int kDefaultMaxMapCells = 4096;
+
+// The side limit of a setup's map, metres.
+double MaxMapSide(const MapperSetup& setup);
 
 // The floor mask (255 floor) of a raw BGR frame, from a segmenter that sees
 // the frames in the order they were taken.
@@ -70,7 +80,10 @@ class FrameMapper {
     core::Pose2 pose;  // where it went in the map (the odometry's, corrected)
   };
   // Perceives a frame and puts what it shows in the map at its odometry,
-  // corrected by the tracker.
+  // corrected by the tracker. Throws mapping::MapTooLarge, with nothing
+  // changed, when what the frame can see (its odometry ± the range) would
+  // make the map's extent pass MaxMapSide: the odometry jumped, or the floor
+  // is larger than the limit.
   Seen AddFrame(const robot::Frame& frame);
 
   // The map pose of an odometry pose (the same without tracking).
@@ -122,7 +135,14 @@ class FrameMapper {
   double localize_s() const { return localize_s_; }
 
  private:
+  // Throws MapTooLarge when the frame at `odometry` would pass the limit;
+  // else widens extent_lo_/extent_hi_ to it.
+  void CheckExtent(const core::Pose2& odometry);
+
   MapperSetup setup_;
+  // The extent of what the frames so far can see (odometry ± the range).
+  Eigen::Vector2d extent_lo_ = Eigen::Vector2d::Constant(1e300);
+  Eigen::Vector2d extent_hi_ = Eigen::Vector2d::Constant(-1e300);
   MaskFunction mask_;
   camera::InversePerspectiveMap ipm_;
   vision::ProfileExtractor extractor_;  // the profile tables, built once

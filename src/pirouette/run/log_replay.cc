@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #include "pirouette/camera/range_resolution.h"
@@ -60,7 +61,9 @@ void CheckBounds(double value, double lo, double hi, double asked, const char* o
 // request's, else the log's, else the explorer's defaults.
 MapperSetup SetupOf(const MapLogRequest& request, const io::RunLog& log,
                     const std::string& log_yaml) {
-  MapperSetup setup{log.camera, 0.0, 0.0, 0.0, kExplorationOccupancy, std::nullopt, std::nullopt};
+  MapperSetup setup{
+      log.camera,       0.0, 0.0, 0.0, kExplorationOccupancy, std::nullopt, std::nullopt,
+      request.max_map_m};
   setup.radius_m = request.radius_m > 0.0 ? request.radius_m : log.info.radius_m;
   if (!(setup.radius_m > 0.0)) {
     throw core::InputError(log_yaml, 0, "robot.radius",
@@ -114,9 +117,29 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
       result.status = "interrupted";
       break;
     }
-    const robot::Frame frame = io::ReadLogFrame(log, row);
+    robot::Frame frame;
+    try {
+      frame = io::ReadLogFrame(log, row);
+    } catch (const core::InputError& e) {
+      // A frame missing or cut short ends the log there: what came before
+      // is mapped (a log with no readable frame is bad input).
+      if (result.frames == 0) throw;
+      result.status = "truncated";
+      result.reason = fmt::format("{}; mapped the {} frames before it", e.what(), result.frames);
+      break;
+    }
     if (row.contact) mapper.AddContact(row.odometry);
-    const FrameMapper::Seen seen = mapper.AddFrame(frame);
+    std::optional<FrameMapper::Seen> added;
+    try {
+      added = mapper.AddFrame(frame);
+    } catch (const mapping::MapTooLarge& e) {
+      // Refused before it changed the map: the frames before it stand.
+      result.status = "truncated";
+      result.reason = fmt::format("frame {}: {}; mapped the {} frames before it", row.index,
+                                  e.what(), result.frames);
+      break;
+    }
+    const FrameMapper::Seen& seen = *added;
     if (row.blocked_leg_m) mapper.ConfirmBlocking(seen.profile, seen.pose, *row.blocked_leg_m);
     ++result.frames;
     result.frame_poses.push_back(seen.pose);
@@ -155,6 +178,10 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
     result.scan_matches = graph->scan_matches();
   }
   result.final_frame_poses = mapper.FramePoses();
+  if (result.status.empty() && !log.cut.empty()) {
+    result.status = "truncated";
+    result.reason = fmt::format("{}; mapped the {} frames before it", log.cut, result.frames);
+  }
   if (result.status.empty()) result.status = "complete";
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   result.times.perceive_s = mapper.perceive_s();
@@ -169,7 +196,8 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
 MapLogReport RunMapLog(const MapLogRequest& request) {
   for (const auto& [value, option] :
        {std::pair{request.radius_m, "--radius"}, std::pair{request.cell_m, "--cell"},
-        std::pair{request.max_range_m, "--max-range"}}) {
+        std::pair{request.max_range_m, "--max-range"},
+        std::pair{request.max_map_m, "--max-map-m"}}) {
     if (value < 0.0 || !std::isfinite(value)) {
       throw core::InputError(option, 0, "", "must be a number > 0 (metres)");
     }
@@ -221,6 +249,7 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   run["log"] = request.log_dir;
   if (world) run["world"] = world_path;
   run["status"] = result.status;
+  if (!result.reason.empty()) run["reason"] = result.reason;
   run["method"] = vision::SegmentationMethodName(method);
   run["frames"] = result.frames;
   run["path_length_m"] = Round(result.path_length_m, 1e-4);

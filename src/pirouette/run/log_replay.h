@@ -20,8 +20,9 @@ struct MapLogRequest {
   double radius_m = 0.0;
   double cell_m = 0.0;
   double max_range_m = 0.0;
-  std::string method;    // "default" | "paper"
-  std::string localize;  // "scan" | "none"
+  std::string method;      // "default" | "paper"
+  std::string localize;    // "scan" | "none"
+  double max_map_m = 0.0;  // the map's longest side (0: kDefaultMaxMapCells cells)
   bool quiet = false;
   // Set: publish the map to ROS 2 over DDS frame by frame (Ros2RunPublisher).
   std::optional<Ros2PublishOptions> ros2_publish;
