@@ -37,6 +37,11 @@ constexpr double kMaxOdometryM = 1e4;
 constexpr double kJumpM = 0.25;
 constexpr double kJumpRad = 0.7853981633974483;  // 45°
 constexpr double kJumpSpeedFactor = 3.0;
+// A loop that could not run for this long (wall time: this process starved
+// of the CPU) sent no commands meanwhile, and the base may have stopped on
+// its command timeout: the stall window starts again rather than blame the
+// robot.
+constexpr auto kStarvedWall = std::chrono::milliseconds(200);
 // How long the start waits for discovery to show another driver on cmd_vel.
 constexpr auto kOtherDriverWait = std::chrono::milliseconds(500);
 // How long Halt waits for the robot to acknowledge the zero Twist.
@@ -280,11 +285,15 @@ struct Ros2Robot::Impl {
     outcome.requested = move;
     command = move_controller.Update(latest.pose, latest.time_s);
     Send(command);
+    Clock::time_point last_spin = Clock::now();
     while (!move_controller.reached()) {
       if (options.stop_requested != nullptr && options.stop_requested->load()) break;
       Spin();
       const double threshold = turn ? options.stall_progress_rad : options.stall_progress_m;
-      if (std::abs(move_controller.progress() - stall_progress) > threshold) {
+      const Clock::time_point now = Clock::now();
+      const bool starved = now - last_spin > kStarvedWall;
+      last_spin = now;
+      if (starved || std::abs(move_controller.progress() - stall_progress) > threshold) {
         stall_progress = move_controller.progress();
         stall_since_s = latest.time_s;
       } else if (latest.time_s - stall_since_s > options.stall_s) {
