@@ -81,6 +81,9 @@ void RobotWatchdog::CheckMotionMade(const core::Move& move, const core::MoveOutc
   const double made = std::abs(outcome.achieved);
   const bool idle = made < (IsTurn(move) ? options_.idle_rad : options_.idle_m);
   if (!idle) moved_since_frame_ = true;
+  if (std::abs(move.amount) < (IsTurn(move) ? options_.min_judged_rad : options_.min_judged_m)) {
+    return;
+  }
   if (outcome.stopped_at_contact) {
     idle_moves_ = short_moves_ = 0;
     return;

@@ -29,6 +29,11 @@ struct RobotWatchdogOptions {
   // or scale in its adapter, a slipping drive).
   int max_short_moves = 3;
   double min_fraction = 0.5;
+  // Moves asked for less than this are too small to judge by either count
+  // (within what a base's controller resolves: a turn of 0.2° may end at
+  // 0.1°): they neither count nor break a count.
+  double min_judged_m = 0.01;
+  double min_judged_rad = 0.035;  // 2°
   // Frames in a row with the very same bytes, the robot having moved between
   // each: the camera is frozen.
   int max_identical_frames = 3;

@@ -61,6 +61,16 @@ TEST(RobotWatchdogTest, AWorkingRobotPassesAndAContactIsNoFault) {
   EXPECT_NO_THROW(Explore(watchdog, 10));
 }
 
+TEST(RobotWatchdogTest, MovesTooSmallToJudgeNeverCount) {
+  BentRobot robot;
+  robot.bend_move = [](core::MoveOutcome& o) { o.achieved *= 0.4; };
+  RobotWatchdog watchdog(robot, "the robot");
+  for (int i = 0; i < 10; ++i) {
+    EXPECT_NO_THROW(watchdog.Execute(core::Move::Turn(0.003)));
+    EXPECT_NO_THROW(watchdog.Execute(core::Move::Straight(0.001)));
+  }
+}
+
 TEST(RobotWatchdogTest, FramesEqualAtRestAreNoFault) {
   BentRobot robot;
   core::ImageRgb8 still(8, 6);
