@@ -145,8 +145,9 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
   io::WritePng((out / "map.png").string(),
                draw::DrawMapPicture(seen, result.path, result.stops, kMapPictureWidthPx,
                                     result.graph ? &*result.graph : nullptr));
-  if (result.graph)
+  if (result.graph) {
     io::WriteFileAtomically((out / "graph.g2o").string(), io::G2oText(*result.graph));
+  }
   return map;
 }
 
@@ -401,8 +402,9 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   }
   watchers.Watch(observer);
   std::optional<Recorder> recorder;
-  if (!request.record_dir.empty())
+  if (!request.record_dir.empty()) {
     recorder.emplace(request, robot_info, options.graph.odometry).Watch(observer);
+  }
 
   ExploreReport report{request.robot_url.empty()
                            ? Explore(*world, options, observer)
