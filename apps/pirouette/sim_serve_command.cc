@@ -16,6 +16,8 @@
 #include "pirouette/robot/robot_error.h"
 #include "pirouette/robot/robot_server.h"
 #include "pirouette/robot/ros2/dds_participant.h"
+#include "pirouette/sim/faulty_robot.h"
+#include "pirouette/sim/robot_fault.h"
 #include "pirouette/sim/simulated_robot.h"
 #include "pirouette/tools/ros2_sim_server.h"
 #include "pirouette/tools/sim_view.h"
@@ -34,6 +36,7 @@ struct SimServeRequest {
   bool ros2 = false;                   // serve as a ROS 2 robot over DDS instead
   Ros2Choices ros2_choices;
   ViewChoices view;
+  std::string fault;  // --fault KIND[@N], for testing
 };
 
 // The live view of --view, if asked for: it listens before the robot does.
@@ -49,7 +52,7 @@ std::unique_ptr<tools::SimView> MakeSimView(const SimServeRequest& request,
 
 // The simulator as a ROS 2 robot over DDS (tools::Ros2SimServer).
 void ServeRos2(const SimServeRequest& request, const sim::World& world,
-               const core::OdometryNoise& noise) {
+               const core::OdometryNoise& noise, const sim::RobotFault& fault) {
   Ros2Choices choices = request.ros2_choices;
   choices.publish = true;
   const run::Ros2PublishOptions dds = *Ros2PublishOf(choices);
@@ -58,6 +61,7 @@ void ServeRos2(const SimServeRequest& request, const sim::World& world,
   options.network = dds.network;
   options.ros_namespace = dds.ros_namespace;
   options.stop_requested = StopOnInterrupt();
+  options.fault = fault;
   std::unique_ptr<tools::SimView> view = MakeSimView(request, world);
   if (view) {
     options.on_render = [&view](const core::ImageRgb8& image, const core::Pose2& pose) {
@@ -89,8 +93,13 @@ void Serve(const SimServeRequest& request) {
   const core::OdometryNoise noise = core::OdometryNoiseWith(
       world.robot().odometry_noise, pair(request.odometry_noise), pair(request.odometry_bias));
   core::CheckOdometryNoise(noise);
+  const sim::RobotFault fault =
+      request.fault.empty() ? sim::RobotFault{} : sim::ParseRobotFault(request.fault);
   if (request.ros2) {
-    ServeRos2(request, world, noise);
+    if (fault.kind == sim::RobotFault::Kind::kHalfFrame) {
+      throw core::InputError("--fault", 0, "", "half-frame is a fault of TCP only, not --ros2");
+    }
+    ServeRos2(request, world, noise, fault);
     return;
   }
   sim::SimulatedRobot simulated(world, request.seed, noise);
@@ -98,7 +107,8 @@ void Serve(const SimServeRequest& request) {
   tools::WatchedRobot watched(simulated.robot(), [&](const robot::Frame& frame) {
     if (view) view->OnFrame(frame.image, simulated.robot().TruePose());
   });
-  robot::Robot& robot = watched;
+  sim::FaultyRobot faulty(watched, fault);
+  robot::Robot& robot = faulty;
 
   robot::RobotServerOptions options;
   options.host = request.host;
@@ -107,6 +117,7 @@ void Serve(const SimServeRequest& request) {
   options.log = [](const std::string& message) {
     std::fprintf(stderr, "sim-serve: %s\n", message.c_str());
   };
+  if (fault.kind == sim::RobotFault::Kind::kHalfFrame) options.half_frame_from = fault.from;
   robot::RobotServer server(robot, options);
   if (!request.port_file.empty()) {
     io::WriteFileAtomically(request.port_file, std::to_string(server.port()) + "\n");
@@ -153,6 +164,14 @@ Command AddSimServeCommand(CLI::App& parent) {
                   "with --ros2: let DDS leave this machine (an interface such as eth0 or its "
                   "IPv4 address, or auto); default loopback only");
   AddViewOptions(cmd, request->view, false);
+  cmd->add_option("--fault", request->fault,
+                  "for testing pirouette, not for use: the robot misbehaves from its Nth "
+                  "request on (TCP; 1: the first TURN, MOVE or CAPTURE) or N simulated seconds "
+                  "after the first cmd_vel on (--ros2), default 1; KIND one of " +
+                      sim::RobotFaultKinds() +
+                      " (half-frame: TCP only); what explore does with each: "
+                      "docs/robot-protocol.md and docs/ros2.md")
+      ->type_name("KIND[@N]");
   return {cmd, [request] {
             if (!request->ros2 && (!request->ros2_choices.ros_namespace.empty() ||
                                    !request->ros2_choices.network.empty())) {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <optional>
 #include <system_error>
@@ -108,8 +109,14 @@ Frame RemoteRobot::Capture() {
   frame.image = core::ImageRgb8(header.width, header.height);
   frame.odometry = header.odometry;
   frame.time_s = header.time_s;
-  const TcpConnection::Status status =
-      connection_.ReadExactly(frame.image.data(), header.ByteCount(), options_.reply_timeout);
+  const TcpConnection::Status status = connection_.ReadExactly(
+      frame.image.data(), header.ByteCount(), options_.reply_timeout, deadline_);
+  if (status == TcpConnection::Status::kTimedOut && TcpConnection::Clock::now() >= deadline_) {
+    Fail(
+        fmt::format("did not send the whole {}x{} frame answering CAPTURE within {} s (the "
+                    "deadline of a request)",
+                    header.width, header.height, Seconds(options_.request_timeout)));
+  }
   if (status == TcpConnection::Status::kTimedOut) {
     Fail(fmt::format("stopped sending the {}x{} frame answering CAPTURE (nothing for {} s)",
                      header.width, header.height, Seconds(options_.reply_timeout)));
@@ -133,11 +140,15 @@ std::string RemoteRobot::Ask(const Request& request) {
                     "error; cannot send {}",
                     address_.ToString(), command));
   }
+  deadline_ = TcpConnection::Clock::now() + options_.request_timeout;
   if (connection_.WriteAll(line, options_.reply_timeout) != TcpConnection::Status::kOk) {
     Fail(fmt::format("dropped the connection before {} could be sent ({})", command,
                      connection_.error()));
   }
-  const TcpConnection::Line reply = connection_.ReadLine(kMaxLineLength, options_.reply_timeout);
+  const TcpConnection::Line reply = connection_.ReadLine(
+      kMaxLineLength,
+      std::min(options_.reply_timeout, std::chrono::ceil<std::chrono::milliseconds>(
+                                           deadline_ - TcpConnection::Clock::now())));
   switch (reply.status) {
     case TcpConnection::Status::kOk:
       break;

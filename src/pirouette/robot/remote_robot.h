@@ -28,6 +28,11 @@ struct RemoteRobotOptions {
   // frame's bytes arrive. A move that takes the robot longer must be
   // answered within it too.
   std::chrono::milliseconds reply_timeout{30000};
+  // How long a whole request may take, from sending it to the last byte of
+  // its reply (a frame's too): a robot that answers half a frame and then
+  // trickles the rest, never pausing as long as reply_timeout, is cut off by
+  // this.
+  std::chrono::milliseconds request_timeout{60000};
   // How long connecting may take.
   std::chrono::milliseconds connect_timeout{10000};
   // The size frames must have (the camera file's); 0: any size but empty.
@@ -44,7 +49,8 @@ struct RemoteRobotOptions {
 // odometry of the last reply, without asking the robot.
 //
 // Every failure throws RobotError with a message naming HOST:PORT and the
-// request: the connection refused, no reply within the timeout, the
+// request: the connection refused, no reply within the timeout, a reply not
+// whole within the request's deadline, the
 // connection dropped (also in the middle of a frame), a reply that is not
 // the protocol, or an ERR reply. After a failure the connection is closed
 // (its state is unknown) and every later call throws too.
@@ -77,6 +83,8 @@ class RemoteRobot : public Robot {
   RemoteRobotOptions options_;
   TcpConnection connection_;
   core::Pose2 odometry_;
+  // The end of the request under way (set by Ask).
+  TcpConnection::Clock::time_point deadline_;
 };
 
 }  // namespace pirouette::robot

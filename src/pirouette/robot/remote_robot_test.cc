@@ -274,6 +274,30 @@ TEST(RemoteRobotTest, ARobotThatNeverAnswersTimesOutWithAClearMessage) {
   EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
 }
 
+// Half a frame, then the rest a byte at a time, never pausing as long as the
+// reply timeout: the request's deadline cuts it off, naming the robot and
+// the request.
+TEST(RemoteRobotTest, AFrameTrickledByteByByteFailsWithinTheRequestDeadline) {
+  const ScriptedServer server([](TcpConnection& connection) {
+    Greet(connection);
+    EXPECT_EQ(Read(connection), "CAPTURE");
+    connection.WriteAll("FRAME 4 4 1 2 3 0.5\n" + std::string(24, 'x'), 1000ms);
+    for (int i = 0; i < 24; ++i) {
+      std::this_thread::sleep_for(100ms);
+      if (connection.WriteAll("x", 1000ms) != TcpConnection::Status::kOk) return;
+    }
+  });
+  RemoteRobotOptions options;
+  options.reply_timeout = 300ms;
+  options.request_timeout = 600ms;
+  RemoteRobot remote(server.url(), options);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_THAT(ErrorOf([&] { remote.Capture(); }),
+              AllOf(HasSubstr(fmt::format("the robot at 127.0.0.1:{}", server.port())),
+                    HasSubstr("did not send the whole 4x4 frame answering CAPTURE within 0.6 s")));
+  EXPECT_LT(std::chrono::steady_clock::now() - start, 2s);
+}
+
 TEST(RemoteRobotTest, AServerOfAnotherProtocolIsRefusedAtConnection) {
   const ScriptedServer server([](TcpConnection& connection) {
     Read(connection);

@@ -118,6 +118,8 @@ void RobotServer::RefuseWaitingClients() {
 
 void RobotServer::ServeClient(TcpConnection client, const std::string& peer) {
   Log(fmt::format("client {} connected", peer));
+  requests_ = 0;
+  hanging_ = false;
   while (!Stopping()) {
     // A client that has just left must not make its successor look like a
     // second client: read its close first.
@@ -139,7 +141,24 @@ void RobotServer::ServeClient(TcpConnection client, const std::string& peer) {
       Log(fmt::format("client {} stopped reading ({}); closed", peer, client.error()));
       return;
     }
+    if (hanging_) {
+      Hang(client, peer);
+      return;
+    }
   }
+}
+
+void RobotServer::Hang(TcpConnection& client, const std::string& peer) {
+  Log(fmt::format("sent client {} half a frame (a fault for testing); hanging", peer));
+  while (!Stopping()) {
+    if (!client.HasInput()) RefuseWaitingClients();
+    const TcpConnection::Line line = client.ReadLine(kMaxLineLength, kStopPollInterval);
+    if (line.status == TcpConnection::Status::kClosed ||
+        line.status == TcpConnection::Status::kTooLong) {
+      break;
+    }
+  }
+  Log(fmt::format("client {} left", peer));
 }
 
 bool RobotServer::Answer(TcpConnection& client, const std::string& line) {
@@ -151,6 +170,10 @@ bool RobotServer::Answer(TcpConnection& client, const std::string& line) {
     request = ParseRequest(line);
   } catch (const RobotError& e) {
     return send(FormatErrorReply(e.what()));
+  }
+  if (request.kind == Request::Kind::kTurn || request.kind == Request::Kind::kMove ||
+      request.kind == Request::Kind::kCapture) {
+    ++requests_;
   }
   std::string reply;
   Frame frame;
@@ -181,9 +204,13 @@ bool RobotServer::Answer(TcpConnection& client, const std::string& line) {
         FormatErrorReply(fmt::format("{} failed: {}", CommandName(request.kind), e.what())));
   }
   if (!send(reply)) return false;
-  return frame.image.empty() ||
-         client.WriteAll(frame.image.data(), frame.image.size_bytes(), options_.write_timeout) ==
-             TcpConnection::Status::kOk;
+  std::size_t bytes = frame.image.size_bytes();
+  if (options_.half_frame_from > 0 && requests_ >= options_.half_frame_from && bytes > 0) {
+    bytes /= 2;
+    hanging_ = true;
+  }
+  return bytes == 0 || client.WriteAll(frame.image.data(), bytes, options_.write_timeout) ==
+                           TcpConnection::Status::kOk;
 }
 
 }  // namespace pirouette::robot

@@ -23,6 +23,11 @@ struct RobotServerOptions {
   // Told what happens (a client came, went, was refused), one line without
   // '\n'; may be empty. Called on the thread running Serve().
   std::function<void(const std::string&)> log;
+  // For testing (sim-serve --fault half-frame@N): from the Nth request of a
+  // connection on (counting TURN, MOVE and CAPTURE; 0: never), a CAPTURE is
+  // answered with its header and half the frame's bytes, and then nothing
+  // more: the connection hangs until the client goes.
+  int half_frame_from = 0;
 };
 
 // Serves a Robot over TCP with the line protocol (line_protocol.h), one
@@ -59,6 +64,8 @@ class RobotServer {
   // Carries out one request line and sends its reply; false when the client
   // could not be written to.
   bool Answer(TcpConnection& client, const std::string& line);
+  // half_frame_from: reads and drops what the client sends until it goes.
+  void Hang(TcpConnection& client, const std::string& peer);
   bool Stopping() const;
   // Answers "ERR busy" to clients that connect while one is served.
   void RefuseWaitingClients();
@@ -69,6 +76,8 @@ class RobotServer {
   int listen_fd_ = -1;
   int port_ = 0;
   std::atomic<bool> stop_{false};
+  int requests_ = 0;      // TURN, MOVE and CAPTURE of the connection served
+  bool hanging_ = false;  // half_frame_from: half a frame was sent
 };
 
 }  // namespace pirouette::robot

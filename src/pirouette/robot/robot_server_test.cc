@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdint>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -128,6 +129,29 @@ TEST(RobotServerTest, ServesOneClientAtATimeAndTheNextAfterIt) {
   EXPECT_EQ(third.Ask("ODOM"), "OK 0.2 0.2 90");
   const std::lock_guard lock(mutex);
   EXPECT_GE(log.size(), 3U);
+}
+
+// The fault for testing: half a frame's bytes, then nothing, however long
+// the client waits; the server still stops at once and serves the next.
+TEST(RobotServerTest, HalfFrameFromSendsHalfAFrameAndHangs) {
+  testing::FakeRobot robot(4, 4);
+  RobotServerOptions options = AnyPort();
+  options.half_frame_from = 2;
+  RobotServer server(robot, options);
+  const Serving serving(server);
+  {
+    Client client(server.port());
+    EXPECT_EQ(client.Ask("TURN 45"), "OK 45 0.2 0.2 90 0");
+    EXPECT_THAT(client.Ask("CAPTURE"), StartsWith("FRAME 4 4 "));
+    std::vector<std::uint8_t> bytes(48);
+    EXPECT_EQ(client.connection().ReadExactly(bytes.data(), 24, 1000ms),
+              TcpConnection::Status::kOk);
+    EXPECT_EQ(client.connection().ReadExactly(bytes.data(), 1, 300ms),
+              TcpConnection::Status::kTimedOut);
+    EXPECT_EQ(client.Ask("ODOM"), "<no reply>");
+  }
+  Client next(server.port());
+  EXPECT_EQ(next.Ask("ODOM"), "OK 0.2 0.2 90");
 }
 
 TEST(RobotServerTest, AnOverlongLineClosesTheClientButNotTheServer) {

@@ -180,12 +180,20 @@ TcpConnection::Line TcpConnection::ReadLine(std::size_t max_length, Duration tim
 
 TcpConnection::Status TcpConnection::ReadExactly(std::uint8_t* out, std::size_t size,
                                                  Duration timeout) {
+  return ReadExactly(out, size, timeout, Clock::time_point::max());
+}
+
+TcpConnection::Status TcpConnection::ReadExactly(std::uint8_t* out, std::size_t size,
+                                                 Duration timeout, Clock::time_point deadline) {
   if (!is_open()) return Status::kClosed;
   std::size_t done = std::min(size, buffer_.size());
   std::copy_n(buffer_.data(), done, out);
   buffer_.erase(0, done);
   while (done < size) {
-    if (const Status s = Wait(POLLIN, timeout); s != Status::kOk) return s;
+    const Clock::time_point now = Clock::now();
+    if (now >= deadline) return Status::kTimedOut;
+    const Duration wait = std::min(timeout, std::chrono::ceil<Duration>(deadline - now));
+    if (const Status s = Wait(POLLIN, wait); s != Status::kOk) return s;
     const ssize_t n = ::recv(fd_, out + done, size - done, 0);
     if (n > 0) {
       done += static_cast<std::size_t>(n);

@@ -18,6 +18,7 @@ namespace pirouette::robot {
 class TcpConnection {
  public:
   using Duration = std::chrono::milliseconds;
+  using Clock = std::chrono::steady_clock;
 
   // How a read or write ended.
   enum class Status {
@@ -57,6 +58,10 @@ class TcpConnection {
   // Reads exactly `size` bytes into `out`; `timeout` bounds each wait for more
   // data (a slow but steady sender is not cut off).
   Status ReadExactly(std::uint8_t* out, std::size_t size, Duration timeout);
+  // The same, and all of it by `deadline`: a sender that trickles the bytes,
+  // never pausing as long as `timeout`, is cut off too (kTimedOut).
+  Status ReadExactly(std::uint8_t* out, std::size_t size, Duration timeout,
+                     Clock::time_point deadline);
   // Writes all of `bytes`; `timeout` bounds each wait for the peer to read.
   Status WriteAll(std::string_view bytes, Duration timeout);
   Status WriteAll(const std::uint8_t* bytes, std::size_t size, Duration timeout);

@@ -26,6 +26,7 @@
 #include "pirouette/io/run_log.h"
 #include "pirouette/io/world_file.h"
 #include "pirouette/robot/remote_robot.h"
+#include "pirouette/robot/robot_watchdog.h"
 #include "pirouette/robot/ros2/ros2_robot.h"
 #include "pirouette/run/checkpoint_writer.h"
 #include "pirouette/run/progress_line.h"
@@ -40,6 +41,9 @@ namespace {
 
 // The longest wait for a robot's reply one may ask for (--robot-timeout).
 constexpr double kMaxRobotTimeoutS = 3600.0;
+// A whole request over TCP (a frame's bytes too) may take this many times
+// --robot-timeout: the first bounds each wait, this the request.
+constexpr int kRequestTimeoutFactor = 2;
 
 double Round(double v, double unit) { return std::round(v / unit) * unit; }
 
@@ -147,8 +151,9 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
   io::WritePng((out / "map.png").string(),
                draw::DrawMapPicture(seen, result.path, result.stops, kMapPictureWidthPx,
                                     result.graph ? &*result.graph : nullptr));
-  if (result.graph)
+  if (result.graph) {
     io::WriteFileAtomically((out / "graph.g2o").string(), io::G2oText(*result.graph));
+  }
   return map;
 }
 
@@ -234,16 +239,32 @@ std::unique_ptr<robot::Robot> ConnectRobot(const ExploreRequest& request,
   }
   robot::RemoteRobotOptions remote;
   remote.reply_timeout = RobotTimeout(request);
+  remote.request_timeout = kRequestTimeoutFactor * RobotTimeout(request);
   remote.frame_width = robot_info.camera.width();
   remote.frame_height = robot_info.camera.height();
   return std::make_unique<robot::RemoteRobot>(request.robot_url, remote);
 }
 
-// Explores through a connected robot.
-ExplorationResult ExploreRemote(robot::Robot& robot, const ExploreRequest& request,
+// How a connected robot names itself in reasons: "the robot at HOST:PORT",
+// "the ROS 2 robot (DDS domain N)".
+std::string RobotName(const robot::Robot& robot) {
+  if (const auto* tcp = dynamic_cast<const robot::RemoteRobot*>(&robot)) {
+    return "the robot at " + tcp->address().ToString();
+  }
+  if (const auto* dds = dynamic_cast<const robot::ros2::Ros2Robot*>(&robot)) {
+    return "the ROS 2 robot (" + dds->Describe() + ")";
+  }
+  return "the robot";
+}
+
+// Explores through a connected robot, watched for what no working robot does
+// (robot::RobotWatchdog: odometry that jumps, a clock that goes backwards, a
+// frozen camera, a robot that does not move).
+ExplorationResult ExploreRemote(robot::Robot& connected, const ExploreRequest& request,
                                 const ExplorationOptions& options,
                                 const RobotDescription& robot_info,
                                 const ExplorationObserver& observer) {
+  robot::RobotWatchdog robot(connected, RobotName(connected));
   std::unique_ptr<vision::FloorSegmenter> segmenter = vision::MakeFloorSegmenter(
       request.options.method == vision::MaskSource::kPaper ? vision::SegmentationMethod::kPaper
                                                            : vision::SegmentationMethod::kDefault,
@@ -433,8 +454,9 @@ ExploreReport RunExplore(const ExploreRequest& request) {
   Checkpoints checkpoints(out.string(), run_base);
   checkpoints.Watch(observer);
   std::optional<Recorder> recorder;
-  if (!request.record_dir.empty())
+  if (!request.record_dir.empty()) {
     recorder.emplace(request, robot_info, options.graph.odometry).Watch(observer);
+  }
 
   ExploreReport report{request.robot_url.empty()
                            ? Explore(*world, options, observer)

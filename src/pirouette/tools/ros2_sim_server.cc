@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <deque>
+#include <numbers>
 #include <optional>
+#include <utility>
 
 #include "pirouette/robot/ros2/dds_qos.h"
 #include "pirouette/robot/ros2/dds_reader.h"
@@ -29,6 +32,11 @@ constexpr ros2::TopicQos kClockQos{true, false, 1};
 constexpr const char* kOdomFrame = "odom";
 constexpr const char* kBaseFrame = "base_link";
 constexpr const char* kCameraFrame = "camera_optical_frame";
+
+using FaultKind = sim::RobotFault::Kind;
+// The fault `late`: frames published this long (simulated seconds) after
+// they were taken.
+constexpr double kLateS = 0.5;
 
 // The camera model as ROS's camera_info has it (its distortion model and
 // coefficients in ROS's order, no rectification).
@@ -83,37 +91,76 @@ struct Ros2SimServer::Impl {
         angular = (*command)->angular.z;
         if (!std::isfinite(linear) || !std::isfinite(angular)) linear = angular = 0.0;
         last_command_s = robot.time_s();
+        if (!first_command_s) first_command_s = robot.time_s();
       }
     }
     if (robot.time_s() - last_command_s > options.command_timeout_s) linear = angular = 0.0;
-    robot.Step(linear, angular, options.step_s);
+    double scale = 1.0;
+    if (Faulty(FaultKind::kShortMoves)) scale = sim::RobotFault::kShortFraction;
+    if (Faulty(FaultKind::kStalled)) scale = 0.0;
+    robot.Step(scale * linear, scale * angular, options.step_s);
     ++steps;
     PublishMotion();
     if (robot.still_s() >= options.step_s &&
         (!last_frame_s || robot.time_s() - *last_frame_s >= options.frame_period_s - 1e-9)) {
       PublishFrame();
     }
+    PublishLateFrames();
+  }
+
+  bool Faulty(FaultKind kind) const {
+    return options.fault.kind == kind && first_command_s &&
+           robot.time_s() - *first_command_s >= options.fault.from;
+  }
+
+  // The stamp of what happens at simulated time `t`.
+  double Stamp(double t) const {
+    return Faulty(FaultKind::kClockBack) ? t - sim::RobotFault::kClockBackS : t;
+  }
+
+  // The odometry as published.
+  core::Pose2 Odometry() const {
+    if (Faulty(FaultKind::kTeleport)) {
+      return core::Pose2(sim::RobotFault::kTeleportM, 0.0, 0.0) * robot.odometry();
+    }
+    if (Faulty(FaultKind::kFlip)) return robot.odometry() * core::Pose2(0.0, 0.0, std::numbers::pi);
+    return robot.odometry();
+  }
+
+  void WriteImage(const core::ImageRgb8& frame, double stamp) {
+    ros2::Sample<sensor_msgs_msg_dds__Image_> message;
+    ros2::SetHeader(message->header, ros2::RosTimeOfSeconds(stamp), kCameraFrame);
+    ros2::SetImage(*message, frame);
+    image_writer.Write(*message);
+  }
+
+  // late: what was taken kLateS ago.
+  void PublishLateFrames() {
+    while (!late.empty() && robot.time_s() - late.front().first >= kLateS - 1e-9) {
+      WriteImage(late.front().second, late.front().first);
+      late.pop_front();
+    }
   }
 
   void PublishMotion() {
     const double t = robot.time_s();
     ros2::Sample<nav_msgs_msg_dds__Odometry_> odometry;
-    ros2::SetHeader(odometry->header, ros2::RosTimeOfSeconds(t), kOdomFrame);
+    ros2::SetHeader(odometry->header, ros2::RosTimeOfSeconds(Stamp(t)), kOdomFrame);
     ros2::SetString(odometry->child_frame_id, kBaseFrame);
-    ros2::SetPose(odometry->pose.pose, robot.odometry());
+    ros2::SetPose(odometry->pose.pose, Odometry());
     odometry->twist.twist.linear.x = robot.linear_mps();
     odometry->twist.twist.angular.z = robot.angular_rps();
     odometry_writer.Write(*odometry);
 
     ros2::Sample<tf2_msgs_msg_dds__TFMessage_> tf;
     ros2::ResizeSequence(tf->transforms, 1);
-    ros2::SetHeader(tf->transforms._buffer[0].header, ros2::RosTimeOfSeconds(t), kOdomFrame);
+    ros2::SetHeader(tf->transforms._buffer[0].header, ros2::RosTimeOfSeconds(Stamp(t)), kOdomFrame);
     ros2::SetString(tf->transforms._buffer[0].child_frame_id, kBaseFrame);
-    ros2::SetTransform(tf->transforms._buffer[0].transform, robot.odometry());
+    ros2::SetTransform(tf->transforms._buffer[0].transform, Odometry());
     tf_writer.Write(*tf);
 
     rosgraph_msgs_msg_dds__Clock_ clock{};
-    clock.clock = ros2::RosTimeOfSeconds(t);
+    clock.clock = ros2::RosTimeOfSeconds(Stamp(t));
     clock_writer.Write(clock);
   }
 
@@ -128,10 +175,23 @@ struct Ros2SimServer::Impl {
       if (options.on_render) options.on_render(image, pose);
     }
     const double t = robot.time_s();
-    ros2::Sample<sensor_msgs_msg_dds__Image_> message;
-    ros2::SetHeader(message->header, ros2::RosTimeOfSeconds(t), kCameraFrame);
-    ros2::SetImage(*message, image);
-    image_writer.Write(*message);
+    if (Faulty(FaultKind::kSameFrame)) {
+      if (!held) held = image;
+      WriteImage(*held, Stamp(t));
+    } else if (Faulty(FaultKind::kLate)) {
+      late.emplace_back(t, image);
+    } else if (Faulty(FaultKind::kOutOfOrder)) {
+      if (held) {
+        WriteImage(image, t);
+        WriteImage(*held, held_s);  // the earlier of the pair, after the later one
+        held.reset();
+      } else {
+        held = image;
+        held_s = t;
+      }
+    } else {
+      WriteImage(image, Stamp(t));
+    }
     ros2::Sample<sensor_msgs_msg_dds__CameraInfo_> info;
     ros2::SetHeader(info->header, ros2::RosTimeOfSeconds(t), kCameraFrame);
     SetCameraInfo(*info, world.robot().camera);
@@ -154,9 +214,13 @@ struct Ros2SimServer::Impl {
   double linear = 0.0;
   double angular = 0.0;
   double last_command_s = 0.0;
+  std::optional<double> first_command_s;  // when the first cmd_vel came
   std::optional<double> last_frame_s;
   std::optional<core::Pose2> rendered_at;
   core::ImageRgb8 image;
+  std::optional<core::ImageRgb8> held;  // same-frame, out-of-order: a frame kept back
+  double held_s = 0.0;
+  std::deque<std::pair<double, core::ImageRgb8>> late;  // late: frames not yet published
   int frames = 0;
   long steps = 0;
 };

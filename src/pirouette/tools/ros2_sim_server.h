@@ -10,6 +10,7 @@
 #include "pirouette/core/image.h"
 #include "pirouette/core/odometry_noise.h"
 #include "pirouette/robot/ros2/dds_participant.h"
+#include "pirouette/sim/robot_fault.h"
 #include "pirouette/sim/velocity_robot.h"
 #include "pirouette/sim/world.h"
 
@@ -28,6 +29,13 @@ struct Ros2SimServerOptions {
   // as real bases' drivers do when their controller dies.
   double command_timeout_s = 0.5;
   sim::VelocityLimits limits;
+  // For testing (sim-serve --ros2 --fault): misbehaves so from `fault.from`
+  // seconds of simulated time after the first cmd_vel on: odom and tf shifted 1 m (teleport) or
+  // turned by π (flip); every stamp 5 s back (clock-back); the first faulty
+  // frame's bytes again and again (same-frame); frames published kLateS after
+  // they were taken (late) or in swapped pairs (out-of-order); cmd_vel obeyed
+  // at kShortFraction of its speed (short-moves) or not at all (stalled).
+  sim::RobotFault fault;
   // Set: Serve returns.
   const std::atomic<bool>* stop_requested = nullptr;
   // Told of each newly rendered frame with the true pose it was rendered at

@@ -11,6 +11,7 @@ QosPointer MakeQos(const TopicQos& qos) {
   dds_qset_durability(
       result.get(), qos.transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
   dds_qset_history(result.get(), DDS_HISTORY_KEEP_LAST, qos.depth);
+  if (qos.ignore_local) dds_qset_ignorelocal(result.get(), DDS_IGNORELOCAL_PROCESS);
   return result;
 }
 

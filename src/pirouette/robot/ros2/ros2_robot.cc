@@ -30,6 +30,20 @@ constexpr double kMoveTimeFactor = 4.0;
 constexpr double kMoveSlackS = 10.0;
 // Odometry farther than this from its origin (metres) is not a robot's.
 constexpr double kMaxOdometryM = 1e4;
+// Odometry may move between two readings by this much plus kJumpSpeedFactor
+// times the cruising speed times the time between them: more is a jump no
+// wheel made. Far above any real robot's (the factor covers a base that
+// overshoots the speed it is told).
+constexpr double kJumpM = 0.25;
+constexpr double kJumpRad = 0.7853981633974483;  // 45°
+constexpr double kJumpSpeedFactor = 3.0;
+// A loop that could not run for this long (wall time: this process starved
+// of the CPU) sent no commands meanwhile, and the base may have stopped on
+// its command timeout: the stall window starts again rather than blame the
+// robot.
+constexpr auto kStarvedWall = std::chrono::milliseconds(200);
+// How long the start waits for discovery to show another driver on cmd_vel.
+constexpr auto kOtherDriverWait = std::chrono::milliseconds(500);
 // How long Halt waits for the robot to acknowledge the zero Twist.
 constexpr dds_duration_t kHaltAckWait = DDS_MSECS(200);
 
@@ -52,7 +66,8 @@ struct Ros2Robot::Impl {
         odometry_reader(participant, "odom", kSensorReaderQos),
         image_reader(participant, "image_raw", kSensorReaderQos),
         info_reader(participant, "camera_info", kSensorReaderQos),
-        command_writer(participant, "cmd_vel", kReliableQos) {}
+        command_writer(participant, "cmd_vel", kReliableQos),
+        other_commands(participant, "cmd_vel", kOtherWritersQos) {}
 
   // ---- what has arrived ----
 
@@ -69,6 +84,12 @@ struct Ros2Robot::Impl {
       }
     }
     TakeCameraInfo();
+    if (other_commands.Take()) {
+      Fail(
+          fmt::format("another node publishes on {} while this run drives the robot: two "
+                      "drivers would fight over it",
+                      command_writer.topic_name()));
+    }
     if (got) {
       last_odometry_wall = Clock::now();
       command = controller != nullptr ? controller->Update(latest.pose, latest.time_s) : Velocity{};
@@ -94,6 +115,7 @@ struct Ros2Robot::Impl {
     if (!std::isfinite(r.linear_mps) || !std::isfinite(r.angular_rps)) {
       r.linear_mps = r.angular_rps = 0.0;
     }
+    if (have_odometry) CheckContinuous(r);
     if (!have_odometry) {
       start_time_s = t;
       rest_pose = r.pose;
@@ -107,6 +129,34 @@ struct Ros2Robot::Impl {
     if (moved > options.rest_distance_m || turned > options.rest_angle_rad) {
       rest_pose = r.pose;
       rest_since_s = t;
+    }
+  }
+
+  // Odometry is a robot's integrated motion: its clock never goes back and
+  // its pose moves no faster than the robot. A reading that breaks either
+  // (a clock reset, a teleport, a heading that flips) cannot be trusted, nor
+  // anything the map would build on it after; the run stops (Fail halts the
+  // robot first).
+  void CheckContinuous(const Reading& r) {
+    const double dt = r.time_s - latest.time_s;
+    if (dt < 0.0) {
+      Fail(fmt::format(
+          "the clock of {} went backwards: a reading stamped {:.3f} s after one "
+          "stamped {:.3f} s",
+          odometry_reader.topic_name(), r.time_s - start_time_s, latest.time_s - start_time_s));
+    }
+    const MotionLimits& l = options.limits;
+    const double most_m = kJumpM + kJumpSpeedFactor * l.max_linear_mps * dt;
+    const double most_rad = kJumpRad + kJumpSpeedFactor * l.max_angular_rps * dt;
+    const double moved_m = (r.pose.translation() - latest.pose.translation()).norm();
+    const double turned_rad =
+        std::abs(core::NormalizeAngle(r.pose.heading() - latest.pose.heading()));
+    if (moved_m > most_m || turned_rad > most_rad) {
+      Fail(
+          fmt::format("odometry on {} jumped {:.2f} m and {:.0f}° in {:.3f} s (at most {:.2f} m "
+                      "and {:.0f}° are possible): its odometry cannot be trusted",
+                      odometry_reader.topic_name(), moved_m, core::RadToDeg(turned_rad), dt, most_m,
+                      core::RadToDeg(most_rad)));
     }
   }
 
@@ -177,6 +227,19 @@ struct Ros2Robot::Impl {
                                odometry_reader.topic_name(), Seconds(options.connect_timeout)));
       }
     }
+    // Another driver on cmd_vel (a second run mid-run): refused before a
+    // command is sent, so that the first drives on undisturbed. Discovery
+    // of it may lag the robot's by a moment.
+    const auto discovered = Clock::now() + kOtherDriverWait;
+    while (Clock::now() < discovered) {
+      if (other_commands.MatchedWriters() > 0) {
+        throw RobotError(fmt::format(
+            "the ROS 2 robot ({}): another node already publishes on {}: the robot is driven "
+            "by someone else (a second run? give each robot its own --ros-namespace)",
+            Describe(), command_writer.topic_name()));
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     last_odometry_wall = Clock::now();
   }
 
@@ -222,11 +285,15 @@ struct Ros2Robot::Impl {
     outcome.requested = move;
     command = move_controller.Update(latest.pose, latest.time_s);
     Send(command);
+    Clock::time_point last_spin = Clock::now();
     while (!move_controller.reached()) {
       if (options.stop_requested != nullptr && options.stop_requested->load()) break;
       Spin();
       const double threshold = turn ? options.stall_progress_rad : options.stall_progress_m;
-      if (std::abs(move_controller.progress() - stall_progress) > threshold) {
+      const Clock::time_point now = Clock::now();
+      const bool starved = now - last_spin > kStarvedWall;
+      last_spin = now;
+      if (starved || std::abs(move_controller.progress() - stall_progress) > threshold) {
         stall_progress = move_controller.progress();
         stall_since_s = latest.time_s;
       } else if (latest.time_s - stall_since_s > options.stall_s) {
@@ -304,6 +371,7 @@ struct Ros2Robot::Impl {
   DdsReader<ImageMessage> image_reader;
   DdsReader<InfoMessage> info_reader;
   DdsWriter<Twist> command_writer;
+  DdsReader<Twist> other_commands;  // cmd_vel of other processes: a second driver
   Velocity command;
   MoveController* controller = nullptr;  // the move under way, if any
   bool have_odometry = false;
