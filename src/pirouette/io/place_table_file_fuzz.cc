@@ -19,8 +19,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const pirouette::localize::PlaceTable table = pirouette::io::LoadPlaceTable(path);
     const std::string again = (folder.path() / "again.yaml").string();
     pirouette::io::SavePlaceTable(table, again);
-    if (pirouette::io::LoadPlaceTable(again).entries().size() != table.entries().size())
+    if (pirouette::io::LoadPlaceTable(again).entries().size() != table.entries().size()) {
       std::abort();
+    }
   } catch (const pirouette::core::InputError&) {
   }
   return 0;
