@@ -58,19 +58,32 @@ RunLogInfo ReadInfo(const std::string& path) {
     throw core::InputError(path, e.mark.line + 1, "", e.msg);
   }
   const auto number = [&](const YAML::Node& node, const std::string& field) {
+    double value = 0.0;
     try {
-      return node.as<double>();
+      value = node.as<double>();
     } catch (const YAML::Exception&) {
       throw core::InputError(path, node.Mark().line + 1, field, "must be a number");
     }
+    if (!std::isfinite(value)) {
+      throw core::InputError(path, node.Mark().line + 1, field, "must be a finite number");
+    }
+    return value;
+  };
+  // A section (robot, map, source): absent, empty or a map of its fields.
+  const auto section = [&](const char* key) {
+    const YAML::Node node = root[key];
+    if (node && !node.IsMap() && !node.IsNull()) {
+      throw core::InputError(path, node.Mark().line + 1, key, "must be a map of fields");
+    }
+    return node;
   };
   if (!root.IsMap() || !root["format"] || root["format"].as<std::string>("") != kFormat) {
     throw core::InputError(path, 0, "format", std::string("must be ") + kFormat);
   }
-  if (const YAML::Node robot = root["robot"]; robot && robot["radius"]) {
+  if (const YAML::Node robot = section("robot"); robot && robot["radius"]) {
     info.radius_m = number(robot["radius"], "robot.radius");
   }
-  if (const YAML::Node map = root["map"]) {
+  if (const YAML::Node map = section("map")) {
     if (map["cell"]) info.cell_m = number(map["cell"], "map.cell");
     if (map["max_range"]) info.max_range_m = number(map["max_range"], "map.max_range");
     if (map["method"]) info.method = map["method"].as<std::string>("");
@@ -89,7 +102,7 @@ RunLogInfo ReadInfo(const std::string& path) {
       info.odometry_model = std::array<double, 2>{t, r};
     }
   }
-  if (const YAML::Node source = root["source"]) {
+  if (const YAML::Node source = section("source")) {
     if (source["world"]) info.world = source["world"].as<std::string>("");
     if (source["seed"]) {
       try {

@@ -100,6 +100,20 @@ TEST_F(RunLogTest, BadLogsAreRefusedNamingFileLineAndField) {
   EXPECT_THROW(ReadLogFrame(log, log.rows[0]), core::InputError);  // no image
   std::ofstream(dir_ / "log.yaml") << "format: something-else\n";
   EXPECT_THROW(ReadRunLog(dir_.string()), core::InputError);
+  // A section that is not a map (fuzz/regressions/run_log), a number that is not finite.
+  for (const char* body :
+       {"robot: 0.04\n", "map: 0.01\n", "source: worlds/maze.yaml\n", "robot:\n  radius: .nan\n"}) {
+    std::ofstream(dir_ / "log.yaml") << "format: pirouette-log/1\n" << body;
+    EXPECT_THROW(ReadRunLog(dir_.string()), core::InputError) << body;
+  }
+  std::ofstream(dir_ / "log.yaml") << "format: pirouette-log/1\nmap: 7\n";
+  try {
+    ReadRunLog(dir_.string());
+    FAIL() << "a scalar map section was accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_EQ(e.field(), "map");
+  }
 }
 
 }  // namespace

@@ -157,6 +157,11 @@ TEST(LineProtocolTest, GarbageRepliesAreRefused) {
   EXPECT_THROW(ParseOdometryReply("OK 0 0"), RobotError);
   EXPECT_THROW(ParseOdometryReply("ERR no"), RobotError);
   EXPECT_THROW(ParseHelloReply("OK pirouette-robot/2"), RobotError);
+  // Degrees beyond a double's range (fuzz/regressions/line_protocol): refused,
+  // not read as an infinite heading or turn.
+  EXPECT_THROW(ParseOdometryReply("OK 30 0.2 0.1e3080"), RobotError);
+  EXPECT_THROW(ParseMoveReply("OK 1e4000 0 0 0 0", turn), RobotError);
+  EXPECT_THROW(ParseRequest("TURN -1e4000"), RobotError);
   EXPECT_NO_THROW(ParseHelloReply("OK pirouette-robot/1\r"));
   EXPECT_EQ(ParseFrameHeader("FRAME 0 0 0 0 0 0").ByteCount(), 0U);
 }

@@ -156,7 +156,7 @@ TEST(IntrinsicsCalibrationTest, RecoversAWideAngleLensWithTheRationalModel) {
   // trade off against each other, so they are not compared one by one).
   const camera::CameraModel fitted("fitted", 640, 480, c.intrinsics, c.distortion, {0.1, 0.5, 0.0},
                                    {});
-  for (const Eigen::Vector2d pixel :
+  for (const Eigen::Vector2d& pixel :
        {Eigen::Vector2d(40, 40), Eigen::Vector2d(600, 300), Eigen::Vector2d(320, 460)}) {
     const std::optional<Eigen::Vector2d> back = truth.Project(fitted.Backproject(pixel));
     ASSERT_TRUE(back.has_value());

@@ -30,6 +30,8 @@ bool DeserializeCdr(std::span<const std::uint8_t> bytes, const dds_topic_descrip
                     void* message) {
   if (bytes.size() < kHeaderBytes || bytes[0] != kCdrLe[0] || bytes[1] != kCdrLe[1]) return false;
   const std::span<const std::uint8_t> body = bytes.subspan(kHeaderBytes);
+  // No message of a ROS 2 type is empty (and Cyclone's checks take no null buffer).
+  if (body.empty()) return false;
   // Cyclone's reader trusts its input: check it first, as Cyclone does with
   // what arrives from the network.
   std::vector<std::uint8_t> copy(body.begin(), body.end());
