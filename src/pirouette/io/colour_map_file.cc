@@ -34,6 +34,7 @@ localize::ColourMap ReadColourMap(const std::string& png_path, const core::GridG
   if (!std::filesystem::exists(png_path)) {
     throw core::InputError(png_path, 0, "", "no such file");
   }
+  CheckImageFileSize(png_path);
   const cv::Mat raw = cv::imread(png_path, cv::IMREAD_UNCHANGED);
   if (raw.empty() || raw.depth() != CV_8U) {
     throw core::InputError(png_path, 0, "", "not an 8-bit image OpenCV can read");

@@ -20,6 +20,7 @@
 
 #include "pirouette/core/input_error.h"
 #include "pirouette/io/atomic_file.h"
+#include "pirouette/io/image_io.h"
 #include "pirouette/io/yaml_fields.h"
 #include "pirouette/mapping/occupancy_grid.h"
 
@@ -208,6 +209,7 @@ class PgmParser {
 
 // Any other picture, through OpenCV: colour channels averaged, alpha kept apart.
 GreyImage DecodeOtherImage(const std::string& bytes, const std::string& path) {
+  CheckImageSize(path, bytes);
   const std::vector<unsigned char> buffer(bytes.begin(), bytes.end());
   const cv::Mat decoded = buffer.empty() ? cv::Mat() : cv::imdecode(buffer, cv::IMREAD_UNCHANGED);
   if (decoded.empty()) {
