@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/core/polygon.h"
 #include "pirouette/io/camera_file.h"
 #include "pirouette/io/map_file.h"
 #include "pirouette/io/yaml_fields.h"
@@ -111,77 +112,6 @@ core::Rgb ReadColour(const std::string& file, const YamlField& field) {
 
 YamlField Index(const YamlField& item, std::size_t i) {
   return {item.node, fmt::format("{}[{}]", item.path, i), item.line};
-}
-
-// ---------------------------------------------------------------------------
-// Prisms: the points must make a simple polygon with an area.
-
-double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
-}
-
-int Orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
-  const double cross = Cross(a, b, c);
-  return (cross > 0.0) - (cross < 0.0);
-}
-
-// True where p, known to be on the line through a and b, lies on the segment ab.
-bool WithinSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return p.x() >= std::min(a.x(), b.x()) && p.x() <= std::max(a.x(), b.x()) &&
-         p.y() >= std::min(a.y(), b.y()) && p.y() <= std::max(a.y(), b.y());
-}
-
-// True where the closed segments ab and cd share a point.
-bool SegmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                  const Eigen::Vector2d& d) {
-  const int o1 = Orientation(a, b, c);
-  const int o2 = Orientation(a, b, d);
-  const int o3 = Orientation(c, d, a);
-  const int o4 = Orientation(c, d, b);
-  if (o1 != o2 && o3 != o4) return true;
-  return (o1 == 0 && WithinSegment(c, a, b)) || (o2 == 0 && WithinSegment(d, a, b)) ||
-         (o3 == 0 && WithinSegment(a, c, d)) || (o4 == 0 && WithinSegment(b, c, d));
-}
-
-// Why `points` (a closed polygon, either orientation) is not a simple polygon
-// with an area; nullopt when it is one. Points are numbered from 1 in messages.
-std::optional<std::string> PolygonProblem(const std::vector<Eigen::Vector2d>& points) {
-  const std::size_t n = points.size();
-  const auto next = [n](std::size_t i) { return (i + 1) % n; };
-  for (std::size_t i = 0; i < n; ++i) {
-    if (points[i] == points[next(i)]) {
-      return fmt::format("points {} and {} are the same point", i + 1, next(i) + 1);
-    }
-  }
-  bool collinear = true;
-  for (std::size_t i = 2; i < n; ++i) {
-    collinear = collinear && Orientation(points[0], points[1], points[i]) == 0;
-  }
-  if (collinear) return "the points lie on one line: the polygon has no area";
-  for (std::size_t i = 0; i < n; ++i) {
-    // Adjacent edges share a point; they must not run back over each other.
-    const Eigen::Vector2d& a = points[i];
-    const Eigen::Vector2d& b = points[next(i)];
-    const Eigen::Vector2d& c = points[next(next(i))];
-    if (Orientation(a, b, c) == 0 && (a - b).dot(c - b) > 0.0) {
-      return fmt::format("the polygon folds back on itself at point {}", next(i) + 1);
-    }
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (next(j) == i) continue;  // adjacent through the closing edge
-      if (SegmentsMeet(a, b, points[j], points[next(j)])) {
-        return fmt::format(
-            "the polygon is not simple: the edge from point {} to point {} meets the edge from "
-            "point {} to point {}",
-            i + 1, next(i) + 1, j + 1, next(j) + 1);
-      }
-    }
-  }
-  double twice_area = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    twice_area += points[i].x() * points[next(i)].y() - points[next(i)].x() * points[i].y();
-  }
-  if (std::fabs(twice_area) < 2e-12) return "the polygon has no area";
-  return std::nullopt;
 }
 
 // ---------------------------------------------------------------------------
@@ -351,7 +281,10 @@ sim::Solid ReadObstacle(const std::string& file, const YamlField& field) {
       ThrowInputError(file, points_field,
                       fmt::format("a prism needs at least 3 points, got {}", points.size()));
     }
-    if (const auto problem = PolygonProblem(points)) ThrowInputError(file, points_field, *problem);
+    // The points must make a simple polygon with an area.
+    if (const auto problem = core::PolygonProblem(points)) {
+      ThrowInputError(file, points_field, *problem);
+    }
     const double height = ReadPositive(file, map.Required("height"));
     const core::Rgb colour = ReadColour(file, map.Required("colour"));
     return sim::MakePrism(std::move(points), height, colour);
