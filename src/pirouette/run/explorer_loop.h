@@ -1,0 +1,194 @@
+#pragma once
+
+// Internal to run/: the class behind ExploreWithRobot (run/explorer.h, the
+// interface to include). explorer.cc holds the loop, explorer_recovery.cc the
+// ways out of where the loop cannot go on (backing up to see or off a
+// contact, stepping away to see nearby floor, the way home).
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "pirouette/core/grid_geometry.h"
+#include "pirouette/core/move.h"
+#include "pirouette/core/pose2.h"
+#include "pirouette/explore/look_ahead.h"
+#include "pirouette/explore/planner.h"
+#include "pirouette/mapping/trinary_map.h"
+#include "pirouette/run/explorer.h"
+#include "pirouette/run/frame_mapper.h"
+
+namespace pirouette::run::internal {
+
+using Clock = std::chrono::steady_clock;
+
+// The loop of one exploration, through any robot.
+class Explorer {
+ public:
+  Explorer(robot::Robot& robot, const RobotDescription& description,
+           const ExplorationOptions& options, MaskFunction mask,
+           const ExplorationObserver& observer);
+
+  // The whole run; a robot that fails (robot::RobotError: it stopped
+  // answering, dropped the connection, answered garbage) ends it with status
+  // "stuck" and the map so far.
+  ExplorationResult Run();
+
+ private:
+  enum class FollowOutcome { kReached, kBlocked, kStopped };
+
+  // --- The loop (explorer.cc).
+
+  void Loop();
+
+  // Where the robot is in the map: its odometry, corrected by the tracker.
+  core::Pose2 Pose() const { return mapper_.ToMap(robot_.Odometry()); }
+
+  bool Interrupted();
+
+  bool HomeRequested() const {
+    return options_.control != nullptr && options_.control->home.load();
+  }
+
+  // Stands still while a live view holds the run paused (and nothing ends it).
+  void WaitWhilePaused() const;
+
+  // Takes a frame, reads its obstacle profile and puts it in the map; the
+  // motions since the previous frame go with it to the observer (a log).
+  const FrameMapper::Seen& Look();
+
+  core::MoveOutcome Execute(const core::Move& move);
+
+  void Turn(double radians);
+
+  // Turns to face a leg, which the caller then looks along. With tracking,
+  // a turn is made in steps no larger than a pirouette's with a look after
+  // each (and one before the first, where the robot has not looked since it
+  // drove), so that the tracker matches every frame against one it overlaps
+  // and a turn's error does not go unseen into the map.
+  void Face(double radians);
+
+  // A straight move as made; false when it stopped at contact (the robot
+  // then looks at what it touched, which maps the bumper's hit with it).
+  bool Drive(double metres);
+
+  void Pirouette();
+
+  // Follows a plan's waypoints: for each leg, face it, then in pieces no
+  // longer than the camera checks, look and drive.
+  FollowOutcome Follow(const explore::Plan& plan);
+
+  // The map the planner sees: unknown cells the robot cannot see from here
+  // (under the camera, within its near range, when it has just looked all
+  // round) and those it gave up on count as free.
+  mapping::TrinaryMap PlanningMap() const;
+
+  // The distance from which the robot looks at a goal cell: past the
+  // camera's near range by a coarse cell, so that all of the cell is in view.
+  double ViewDistance() const { return look_.options().near_m + coarse_m_; }
+  // Unknown cells nearer than this to where the robot just looked all round
+  // cannot be seen from there.
+  bool AtLastPirouette() const {
+    return last_pirouette_ && (Pose().translation() - *last_pirouette_).norm() < cell_m_;
+  }
+
+  double NearBlindRadius() const { return ViewDistance() + cell_m_; }
+
+  // A map cell named by its place in the world (the map's origin moves by
+  // whole cells as it grows, so a flat index would name another cell).
+  using WorldCell = std::pair<std::int64_t, std::int64_t>;
+  WorldCell KeyOf(const Eigen::Vector2d& centre) const;
+  Eigen::Vector2d CentreOf(const WorldCell& key) const {
+    return {(static_cast<double>(key.first) + 0.5) * cell_m_,
+            (static_cast<double>(key.second) + 0.5) * cell_m_};
+  }
+
+  template <typename F>
+  static void ForEachUnknownNear(const mapping::TrinaryMap& map, const Eigen::Vector2d& centre,
+                                 double radius, F&& f) {
+    const core::GridGeometry& g = map.geometry;
+    const core::CellIndex lo = g.CellOf(centre - Eigen::Vector2d(radius, radius));
+    const core::CellIndex hi = g.CellOf(centre + Eigen::Vector2d(radius, radius));
+    for (int y = std::max(0, lo.y); y <= std::min(g.height() - 1, hi.y); ++y) {
+      for (int x = std::max(0, lo.x); x <= std::min(g.width() - 1, hi.x); ++x) {
+        const core::CellIndex c{x, y};
+        if ((g.CellCentre(c) - centre).norm() > radius) continue;
+        const std::size_t i = g.Flat(c);
+        if (map.cells[i] == mapping::CellState::kUnknown) f(i);
+      }
+    }
+  }
+
+  // The robot need not drive into the unknown to see it, and cannot see it
+  // from too near (the camera sees no floor nearer than its near range):
+  // the plan ends at the first point of its path within the view distance
+  // of the goal.
+  void StopWhereTheGoalIsInView(explore::Plan& plan) const;
+
+  ExplorationProgress Progress() const;
+
+  void Report();
+
+  // The run as it stands, to the live views.
+  void Snapshot();
+
+  // --- Recovery (explorer_recovery.cc).
+
+  // Backs straight up by the camera's near blind range where the map knows
+  // the floor behind is free within `half_width_m` of the path (counted in
+  // backups); returns whether it did.
+  bool BackUpOverKnownFree(double half_width_m);
+
+  // The paper's unfinished active vision: an obstacle's base hides in the
+  // blind area under the camera, so back up, where the map knows the floor
+  // behind is free, and look again.
+  void BackUpToSee();
+
+  // Backs away from a contact where the floor behind is known free within
+  // half the robot's radius of its path: a robot touching a wall it has
+  // mapped a few centimetres off (odometry error) overlaps that wall in the
+  // map, so the whole disc's corridor would refuse the very back-off that
+  // frees it.
+  void BackOffContact();
+
+  // When the only unknown space left is under the camera's near range around
+  // the robot, drive away from it, where the map knows the floor is free, and
+  // look back. What stays unknown after that is given up. False when there is
+  // nothing to see or nowhere to go.
+  bool StepAwayToSeeNearby();
+
+  // Back to the start over known-free floor: the distance transform from the
+  // start's coarse cell alone, the unknown counted as blocked.
+  // True when the robot reached its start.
+  bool ReturnHome();
+
+  ExplorationOptions options_;
+  const ExplorationObserver& observer_;
+  double cell_m_;
+  double radius_m_;
+  double coarse_m_ = 0.0;
+  ExplorationResult result_;
+  robot::Robot& robot_;
+  FrameMapper mapper_;
+  const explore::LookAhead& look_;
+  FrameMapper::Seen last_seen_;
+  std::vector<core::MoveOutcome> motions_since_frame_;
+  std::vector<Eigen::Vector2d> plan_;  // the plan being followed, for the live views
+  std::unique_ptr<explore::Planner> planner_;
+  std::optional<Eigen::Vector2d> last_pirouette_;
+  core::Pose2 start_pose_;
+  std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing
+  int step_aways_ = 0;
+  bool looked_since_drive_ = false;            // a frame was taken where the robot stands
+  std::vector<std::size_t> pirouette_frames_;  // each pirouette's first frame
+  Clock::time_point start_;
+};
+
+}  // namespace pirouette::run::internal

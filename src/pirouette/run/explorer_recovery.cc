@@ -1,0 +1,137 @@
+// The explorer's ways out of where its loop cannot go on: backing up to see
+// an obstacle's base or off a contact, stepping away to see the floor the
+// camera cannot see near a stop, and the way home (explorer_loop.h).
+#include "pirouette/run/explorer_loop.h"
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "pirouette/explore/coarse_grid.h"
+#include "pirouette/explore/distance_transform.h"
+#include "pirouette/explore/path.h"
+#include "pirouette/mapping/trinary_map.h"
+
+namespace pirouette::run::internal {
+namespace {
+
+// Off a contact the robot backs over floor known free within this fraction
+// of its radius (see BackOffContact).
+constexpr double kBackOffWidthRadii = 0.5;
+// Fewer unknown cells than this near the last stop are its own footprint's
+// rim and specks: not worth a trip (StepAwayToSeeNearby).
+constexpr std::size_t kMinNearbyUnknown = 4;
+// Stepping away to see nearby unknown floor: how far past the camera's
+// near range (cells), and in how many directions, π / kStepAwayHalfTurnSteps
+// (30°) apart, alternating either side of straight away.
+constexpr double kStepAwayPastNearCells = 3.0;
+constexpr int kStepAwayDirections = 12;
+constexpr double kStepAwayHalfTurnSteps = 6.0;
+// Step-aways a run makes at most (each a short trip and a pirouette).
+constexpr int kMaxStepAways = 8;
+// Tries to plan home again after a way home was blocked.
+constexpr int kReturnHomeAttempts = 5;
+
+}  // namespace
+
+bool Explorer::BackUpOverKnownFree(double half_width_m) {
+  const double back = look_.options().near_m;
+  const core::Pose2 pose = Pose();
+  if (!mapping::CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
+                                  pose.translation() - back * pose.Direction(), half_width_m)) {
+    return false;
+  }
+  ++result_.backups;
+  Drive(-back);
+  return true;
+}
+
+void Explorer::BackUpToSee() {
+  if (BackUpOverKnownFree(radius_m_)) Look();
+}
+
+void Explorer::BackOffContact() {
+  if (BackUpOverKnownFree(kBackOffWidthRadii * radius_m_)) ++result_.contact_backoffs;
+}
+
+Explorer::WorldCell Explorer::KeyOf(const Eigen::Vector2d& centre) const {
+  return {std::llround(centre.x() / cell_m_ - 0.5), std::llround(centre.y() / cell_m_ - 0.5)};
+}
+
+bool Explorer::StepAwayToSeeNearby() {
+  if (!last_pirouette_) return false;
+  const mapping::TrinaryMap map = mapper_.grid().ToTrinary();
+  std::vector<WorldCell> nearby;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  ForEachUnknownNear(map, *last_pirouette_, NearBlindRadius(), [&](std::size_t i) {
+    const Eigen::Vector2d centre = map.geometry.CellCentre(map.geometry.Unflat(i));
+    const WorldCell key = KeyOf(centre);
+    if (given_up_.contains(key)) return;
+    nearby.push_back(key);
+    sum += centre;
+  });
+  // Ignore the robot's own footprint's rim and specks: not worth a trip.
+  if (nearby.size() < kMinNearbyUnknown || step_aways_ >= kMaxStepAways) {
+    given_up_.insert(nearby.begin(), nearby.end());
+    return false;
+  }
+  ++step_aways_;
+  const Eigen::Vector2d here = Pose().translation();
+  const Eigen::Vector2d centroid = sum / static_cast<double>(nearby.size());
+  const double away = std::atan2(here.y() - centroid.y(), here.x() - centroid.x());
+  const double distance = look_.options().near_m + kStepAwayPastNearCells * cell_m_;
+  for (int k = 0; k < kStepAwayDirections; ++k) {
+    // Directions away from the unknown first, alternating either side.
+    const int steps = (k + 1) / 2;  // 0, 1, 1, 2, 2, ...
+    const double offset = (k % 2 == 0 ? 1 : -1) * steps * std::numbers::pi / kStepAwayHalfTurnSteps;
+    const double heading = away + offset;
+    const Eigen::Vector2d to =
+        here + distance * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+    if (!mapping::CorridorKnownFree(map, here, to, radius_m_)) continue;
+    explore::Plan plan;
+    plan.waypoints_world = {to};
+    if (Follow(plan) == FollowOutcome::kReached) Pirouette();
+    break;
+  }
+  // Whatever near the old stop is still unknown cannot be seen: give it up.
+  for (const WorldCell& key : nearby) {
+    const core::CellIndex c = mapper_.grid().geometry().CellOf(CentreOf(key));
+    if (mapper_.grid().State(c) == mapping::CellState::kUnknown) given_up_.insert(key);
+  }
+  return true;
+}
+
+bool Explorer::ReturnHome() {
+  for (int attempt = 0; attempt < kReturnHomeAttempts; ++attempt) {
+    explore::PlannerOptions planner_options;
+    planner_options.robot_radius_m = radius_m_;
+    explore::CoarseGrid grid = explore::PlanningGrid(mapper_.grid().ToTrinary(), planner_options);
+    const std::optional<core::CellIndex> home = grid.geometry().CellAt(start_pose_.translation());
+    const std::optional<core::CellIndex> here = grid.geometry().CellAt(Pose().translation());
+    if (!home || !here) return false;
+    for (int y = 0; y < grid.height(); ++y) {
+      for (int x = 0; x < grid.width(); ++x) {
+        if (grid.At({x, y}) == explore::CoarseCell::kGoal) {
+          grid.Set({x, y}, explore::CoarseCell::kBlocked);
+        }
+      }
+    }
+    grid.Set(*home, explore::CoarseCell::kGoal);
+    const explore::DistanceField field = explore::ChamferDistanceTransform(grid);
+    const std::optional<explore::Path> path = explore::SteepestDescent(grid, field, *here);
+    if (!path) return false;
+    explore::Plan plan = explore::PlanAlong(grid, *path, Pose().translation(), /*enter_goal=*/true);
+    plan.waypoints_world.push_back(start_pose_.translation());
+    if (Follow(plan) == FollowOutcome::kReached) {
+      Turn(core::NormalizeAngle(start_pose_.heading() - Pose().heading()));
+      result_.path.push_back(Pose());
+      return true;
+    }
+    if (!result_.status.empty()) return false;
+  }
+  return false;
+}
+
+}  // namespace pirouette::run::internal
