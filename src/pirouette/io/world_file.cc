@@ -544,4 +544,8 @@ sim::World LoadWorldFile(const std::string& path) {
   return ParseWorld(io::LoadYamlFile(path), path);
 }
 
+sim::World ParseWorldText(const std::string& text, const std::string& path) {
+  return ParseWorld(io::ParseYaml(text, path), path);
+}
+
 }  // namespace pirouette::io

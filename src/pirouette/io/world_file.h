@@ -15,6 +15,12 @@ namespace pirouette::io {
 // and a start pose that overlaps an obstacle or leaves the floor.
 sim::World LoadWorldFile(const std::string& path);
 
+// The world in `text`, read exactly as LoadWorldFile reads a file of these
+// bytes at `path`: `path` names it in messages and is the folder relative
+// camera and map paths start from. For a world made in memory (a generated
+// one's WorldFileText) that must be the world its file would be.
+sim::World ParseWorldText(const std::string& text, const std::string& path);
+
 // A `grid` obstacle's blocks (SPEC.md): the map's cells, its lower-left
 // corner at the world's (0, 0); a block wherever map_server does not serve
 // the cell as free (0): occupied, unknown and, in scale and raw modes, the

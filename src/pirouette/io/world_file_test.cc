@@ -17,6 +17,7 @@
 #include "pirouette/core/angle.h"
 #include "pirouette/core/input_error.h"
 #include "pirouette/testing/input_error.h"
+#include "pirouette/testing/same_world.h"
 #include "pirouette/testing/temp_dir.h"
 
 namespace pirouette::io {
@@ -185,6 +186,20 @@ TEST(WorldFileTest, LoadsEveryValue) {
   EXPECT_EQ(robot.camera.mount().tilt_rad, core::DegToRad(30.0));
   EXPECT_EQ(robot.odometry_noise.translation, 0.01);
   EXPECT_EQ(robot.odometry_noise.rotation, 0.02);
+}
+
+TEST(WorldFileTest, TextReadsAsItsFileWouldAtThatPath) {
+  const TempDir dir;
+  dir.Write("cam.yaml", kWorldCamera);
+  // Not written (yet): the camera is found beside the path all the same.
+  const std::string path = dir / "world.yaml";
+  const sim::World world = ParseWorldText(kWorld, path);
+  EXPECT_TRUE(testing::SameWorld(world, LoadWorldFile(dir.Write("world.yaml", kWorld))));
+  const core::InputError error =
+      ExpectInputError([&] { ParseWorldText(EditedWorld("radius: 0.04", "radius: -1"), path); });
+  EXPECT_EQ(error.file(), path);
+  EXPECT_EQ(error.field(), "robot.radius");
+  EXPECT_EQ(error.line(), 22);
 }
 
 TEST(WorldFileTest, OptionalFieldsTakeTheirDefaults) {
