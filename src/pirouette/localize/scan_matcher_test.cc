@@ -120,11 +120,17 @@ TEST(ScanMatcherTest, ACorridorKeepsThePriorAlongItsLength) {
 }
 
 TEST(ScanMatcherTest, TheResponseIsTheShareOfHitsOnTheReference) {
-  // Half the scan is ground the reference never saw: about half respond.
+  // Half the scan is ground the reference never saw (a patch 2 m beyond the
+  // corridor's wall, 1.2 m wide, a point every 1 cm along x and 5 cm along
+  // y): about half respond.
   const HitStore reference = Store(Corridor(0.005, 0.0));
   std::vector<Eigen::Vector2d> offsets = Offsets(Corridor(0.007, 0.5), {0.0, 0.5}, 0.0, 1.5);
   const std::size_t seen = offsets.size();
-  for (std::size_t i = 0; i < seen; ++i) offsets.emplace_back(0.3 + 0.01 * i, 2.0 + 0.37 * i);
+  constexpr std::size_t kAcross = 120;
+  for (std::size_t i = 0; i < seen; ++i) {
+    offsets.emplace_back(0.3 + 0.01 * static_cast<double>(i % kAcross),
+                         2.0 + 0.05 * static_cast<double>(i / kAcross));
+  }
   const ScanMatch match = MatchScan(reference, {0.0, 0.5}, offsets, Prior(0.02, 1.0 * kDeg));
   ASSERT_TRUE(match.accepted);
   EXPECT_NEAR(match.response, 0.5, 0.05);
