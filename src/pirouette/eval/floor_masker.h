@@ -23,6 +23,9 @@ class FloorMasker {
   // The mask (255 floor) of a raw BGR frame taken with the robot at
   // world_T_robot; only kTruth looks at the pose.
   cv::Mat1b Mask(const cv::Mat3b& bgr_raw, const core::Pose2& world_T_robot);
+  // The segmenter's settling frames (vision::FloorSegmenter::SettlingFrames);
+  // 0 for the truth.
+  int SettlingFrames() const { return segmenter_ ? segmenter_->SettlingFrames() : 0; }
 
  private:
   vision::MaskSource source_;

@@ -68,6 +68,7 @@ OccupancyGrid::OccupancyGrid(core::GridGeometry geometry, OccupancyOptions optio
       free_below_(static_cast<float>(ProbabilityToLogOdds(kFreeThreshold))),
       cells_(geometry_.CellCount()) {
   blind_cap_ = std::min(blind_, clamp_max_);
+  one_hit_ = std::min(hit_, clamp_max_);
 }
 
 double OccupancyGrid::Probability(const core::CellIndex& c) const {

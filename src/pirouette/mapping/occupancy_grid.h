@@ -110,6 +110,26 @@ class OccupancyGrid {
   bool Known(const core::CellIndex& c) const {
     return geometry_.Contains(c) && cells_[geometry_.Flat(c)].stamp != 0;
   }
+  // Whether the cell's only evidence is a blind area (CellUpdate::kBlind): it
+  // was touched, and no hit or miss has changed it since (false off the grid).
+  bool BlindOnly(const core::CellIndex& c) const {
+    if (!geometry_.Contains(c)) return false;
+    const Cell& cell = cells_[geometry_.Flat(c)];
+    return cell.stamp != 0 && cell.log_odds == blind_cap_;
+  }
+  // Whether the cell leans occupied (log-odds above 0) on the evidence of at
+  // most one look: a blind area only, or no more than one hit (a hit on a
+  // cell nothing else touched, or one that misses have already pulled down).
+  // What one frame says can be wrong where a second look would not be (a
+  // vertical edge cutting a column of a tilted camera's picture, a wall a few
+  // centimetres off filling the view), so an explorer may look again before
+  // it takes such a cell to close the map. False off the grid.
+  bool OnOneLook(const core::CellIndex& c) const {
+    if (!geometry_.Contains(c)) return false;
+    const Cell& cell = cells_[geometry_.Flat(c)];
+    return cell.stamp != 0 && cell.log_odds > 0.0F &&
+           (cell.log_odds == blind_cap_ || cell.log_odds <= one_hit_);
+  }
   // The whole grid by State(), on the same geometry.
   TrinaryMap ToTrinary() const;
   // The grid as an explorer reads it: unknown is only what no update ever
@@ -202,6 +222,7 @@ class OccupancyGrid {
   float miss_;
   float blind_;
   float blind_cap_;  // min(logit(blind), clamp max)
+  float one_hit_;    // min(logit(hit), clamp max): one hit on an untouched cell
   float clamp_min_;
   float clamp_max_;
   float occupied_above_;  // logit(kOccupiedThreshold)

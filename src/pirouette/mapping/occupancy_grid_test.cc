@@ -273,6 +273,27 @@ TEST(OccupancyGrid, ExploredMapDecidesEveryTouchedCell) {
   EXPECT_EQ(explored.At({4, 0}), CellState::kUnknown);  // never touched
 }
 
+TEST(OccupancyGrid, OnOneLookIsWhatLeansOccupiedOnOneFrame) {
+  OccupancyGrid grid = SmallGrid();
+  Repeat(grid, {0, 0}, CellUpdate::kBlind, 3);  // a blind area only
+  Repeat(grid, {1, 0}, CellUpdate::kHit, 1);    // one hit
+  Repeat(grid, {2, 0}, CellUpdate::kMiss, 1);
+  Repeat(grid, {2, 0}, CellUpdate::kHit, 1);  // a hit against a miss: still leaning occupied
+  Repeat(grid, {3, 0}, CellUpdate::kHit, 2);  // two looks agree
+  Repeat(grid, {4, 0}, CellUpdate::kBlind, 1);
+  Repeat(grid, {4, 0}, CellUpdate::kHit, 1);  // a blind area then a hit: two looks
+  Repeat(grid, {5, 0}, CellUpdate::kHit, 1);
+  Repeat(grid, {5, 0}, CellUpdate::kMiss, 3);  // leans free
+  EXPECT_TRUE(grid.OnOneLook({0, 0}));
+  EXPECT_TRUE(grid.OnOneLook({1, 0}));
+  EXPECT_TRUE(grid.OnOneLook({2, 0}));
+  EXPECT_FALSE(grid.OnOneLook({3, 0}));
+  EXPECT_FALSE(grid.OnOneLook({4, 0}));
+  EXPECT_FALSE(grid.OnOneLook({5, 0}));
+  EXPECT_FALSE(grid.OnOneLook({6, 0}));   // never touched
+  EXPECT_FALSE(grid.OnOneLook({-1, 0}));  // off the grid
+}
+
 TEST(OccupancyGrid, CroppedToKnownKeepsCellsAndWorldPositions) {
   OccupancyGrid grid(core::GridGeometry(0.1, {-1.0, -2.0}, 30, 20));
   ASSERT_TRUE(grid.Apply({10, 5}, CellUpdate::kHit));

@@ -270,7 +270,8 @@ ExplorationResult ExploreRemote(robot::Robot& connected, const ExploreRequest& r
                                                            : vision::SegmentationMethod::kDefault,
       robot_info.camera);
   return ExploreWithRobot(
-      robot, robot_info, options, [&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); },
+      robot, robot_info, options,
+      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames()},
       observer);
 }
 

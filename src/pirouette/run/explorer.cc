@@ -45,7 +45,7 @@ constexpr int kViewPointBisections = 30;
 }  // namespace
 
 Explorer::Explorer(robot::Robot& robot, const RobotDescription& description,
-                   const ExplorationOptions& options, MaskFunction mask,
+                   const ExplorationOptions& options, FrameMasks masks,
                    const ExplorationObserver& observer)
     : options_(options),
       observer_(observer),
@@ -64,15 +64,14 @@ Explorer::Explorer(robot::Robot& robot, const RobotDescription& description,
                               ? std::optional<localize::GraphTrackerOptions>(options.graph)
                               : std::nullopt,
                           options.max_map_m},
-              std::move(mask), robot.Odometry()),
+              std::move(masks), robot.Odometry()),
       look_(mapper_.look_ahead()),
       start_(Clock::now()) {
-  explore::PlannerOptions planner_options;
-  planner_options.robot_radius_m = radius_m_;
+  planner_options_.robot_radius_m = radius_m_;
   planner_ = options.planner == PlannerKind::kFrontier
-                 ? explore::MakeFrontierPlanner(planner_options)
-                 : explore::MakeDistanceTransformPlanner(planner_options);
-  coarse_m_ = planner_options.CoarseFactor(cell_m_) * cell_m_;
+                 ? explore::MakeFrontierPlanner(planner_options_)
+                 : explore::MakeDistanceTransformPlanner(planner_options_);
+  coarse_m_ = planner_options_.CoarseFactor(cell_m_) * cell_m_;
 }
 
 ExplorationResult Explorer::Run() {
@@ -147,6 +146,16 @@ void Explorer::Loop() {
       plan = planner_->Next(PlanningMap(), Pose());
     }
     if (!plan) {
+      run::StageTimer timer(result_.times.plan_s);
+      plan = PlanOutOfTheBlindArea();
+    }
+    bool verifying = false;  // the plan goes to look again at what one look closed
+    if (!plan) {
+      run::StageTimer timer(result_.times.plan_s);
+      plan = planner_->Next(VerificationMap(), Pose());
+      verifying = plan.has_value();
+    }
+    if (!plan) {
       plan_.clear();
       if (!StepAwayToSeeNearby()) result_.status = "complete";
       continue;
@@ -168,6 +177,9 @@ void Explorer::Loop() {
     } else if (outcome == FollowOutcome::kReached) {
       failures = 0;
       Pirouette();
+      // It has looked again: what the evidence opened is planned as usual,
+      // and the goal is not checked again.
+      if (verifying) planner_->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kBlocked) {
       if (++failures % kFailuresPerGiveUp == 0) planner_->ReportUnreachable(*plan);
       if (failures >= kMaxFailures) {
@@ -343,6 +355,52 @@ mapping::TrinaryMap Explorer::PlanningMap() const {
   return map;
 }
 
+mapping::TrinaryMap Explorer::VerificationMap() const {
+  mapping::TrinaryMap map = PlanningMap();
+  const mapping::OccupancyGrid& occupancy = mapper_.grid();
+  const core::GridGeometry& g = map.geometry;
+  const Eigen::Vector2d here = Pose().translation();
+  const double near = NearBlindRadius();
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      const core::CellIndex c{x, y};
+      mapping::CellState& state = map.cells[g.Flat(c)];
+      if (state != mapping::CellState::kOccupied || !occupancy.OnOneLook(c)) continue;
+      if ((g.CellCentre(c) - here).norm() <= near) continue;
+      state = mapping::CellState::kFree;
+    }
+  }
+  return map;
+}
+
+std::optional<explore::Plan> Explorer::PlanOutOfTheBlindArea() {
+  if (!AtLastPirouette()) return std::nullopt;
+  mapping::TrinaryMap map = PlanningMap();
+  const core::Pose2 pose = Pose();
+  const explore::CoarseGrid grid = explore::PlanningGrid(map, planner_options_);
+  const std::optional<core::CellIndex> here = grid.geometry().CellAt(pose.translation());
+  if (!here || grid.At(*here) != explore::CoarseCell::kBlocked) return std::nullopt;
+  // The blind cells whose growth by the radius can reach the robot's coarse
+  // cell: within the radius of it, and no farther.
+  const mapping::OccupancyGrid& occupancy = mapper_.grid();
+  const core::GridGeometry& g = map.geometry;
+  const double radius = radius_m_ + std::numbers::sqrt2 * coarse_m_;
+  const Eigen::Vector2d& centre = pose.translation();
+  const core::CellIndex lo = g.CellOf(centre - Eigen::Vector2d(radius, radius));
+  const core::CellIndex hi = g.CellOf(centre + Eigen::Vector2d(radius, radius));
+  bool freed = false;
+  for (int y = std::max(0, lo.y); y <= std::min(g.height() - 1, hi.y); ++y) {
+    for (int x = std::max(0, lo.x); x <= std::min(g.width() - 1, hi.x); ++x) {
+      const core::CellIndex c{x, y};
+      if ((g.CellCentre(c) - centre).norm() > radius || !occupancy.BlindOnly(c)) continue;
+      map.cells[g.Flat(c)] = mapping::CellState::kFree;
+      freed = true;
+    }
+  }
+  if (!freed) return std::nullopt;
+  return planner_->Next(map, pose);
+}
+
 void Explorer::StopWhereTheGoalIsInView(explore::Plan& plan) const {
   const double view = ViewDistance();
   Eigen::Vector2d from = Pose().translation();
@@ -394,13 +452,13 @@ void Explorer::Snapshot() {
 }  // namespace internal
 
 ExplorationResult ExploreWithRobot(robot::Robot& robot, const RobotDescription& description,
-                                   const ExplorationOptions& options, MaskFunction mask,
+                                   const ExplorationOptions& options, FrameMasks masks,
                                    const ExplorationObserver& observer) {
   CheckExplorationOptions(options);
   if (!(description.radius_m > 0.0) || !std::isfinite(description.radius_m)) {
     throw core::InputError("robot radius", 0, "", "must be a number > 0 (metres)");
   }
-  internal::Explorer explorer(robot, description, options, std::move(mask), observer);
+  internal::Explorer explorer(robot, description, options, std::move(masks), observer);
   return explorer.Run();
 }
 

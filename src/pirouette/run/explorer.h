@@ -10,11 +10,11 @@ namespace pirouette::run {
 // pirouette, then repeatedly: plan to the nearest unknown space, and for each
 // straight move face it, look, check the floor is free for the whole move
 // (else map what is there and plan again), drive, and pirouette at the goal;
-// until no reachable unknown space is left); the map is in the robot's odometry frame. `mask`
-// segments the robot's frames in order. Throws core::InputError for bad
+// until no reachable unknown space is left); the map is in the robot's odometry frame. `masks`
+// segment the robot's frames in order. Throws core::InputError for bad
 // options, and lets the robot's errors through (robot::RobotError...).
 ExplorationResult ExploreWithRobot(robot::Robot& robot, const RobotDescription& description,
-                                   const ExplorationOptions& options, MaskFunction mask,
+                                   const ExplorationOptions& options, FrameMasks masks,
                                    const ExplorationObserver& observer = {});
 
 }  // namespace pirouette::run

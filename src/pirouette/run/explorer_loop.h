@@ -33,7 +33,7 @@ using Clock = std::chrono::steady_clock;
 class Explorer {
  public:
   Explorer(robot::Robot& robot, const RobotDescription& description,
-           const ExplorationOptions& options, MaskFunction mask,
+           const ExplorationOptions& options, FrameMasks masks,
            const ExplorationObserver& observer);
 
   // The whole run; a robot that fails (robot::RobotError: it stopped
@@ -89,6 +89,34 @@ class Explorer {
   // (under the camera, within its near range, when it has just looked all
   // round) and those it gave up on count as free.
   mapping::TrinaryMap PlanningMap() const;
+
+  // The planning map without what single looks alone say is in the way
+  // (OccupancyGrid::OnOneLook: a blind area, a cell one hit marks), for a plan
+  // when the planning map has none: a phantom hit where a vertical edge cuts
+  // a column of the tilted camera's picture, or a blind area that reaches
+  // through a thin wall into the corridor behind it, grown by the robot's
+  // radius closes a corridor as narrow as a maze's, and the run would end
+  // complete with the space beyond unseen. A plan on this map takes the robot
+  // where it sees that evidence again from elsewhere (the look before every
+  // move stops it where an obstacle is really in the way, and confirms it);
+  // its goal is given up once the robot has looked all round there, so each
+  // goal is checked once. The cells within NearBlindRadius of the robot keep
+  // their evidence: the camera cannot look at them from here.
+  mapping::TrinaryMap VerificationMap() const;
+
+  // A plan out of the camera's blind area at the robot's feet, when the
+  // planner found none because the robot's own coarse cell is blocked: where
+  // a view was filled by something near (a wall a few centimetres off), the
+  // cells out to the near range are a blind area, which counts as an obstacle
+  // and, grown by the robot's radius, covers where it stands (nearly always at
+  // the start, before anything around it was seen). The blind cells whose
+  // growth reaches the robot's coarse cell (within a radius and a coarse
+  // cell's diagonal of it) then count as free for this one plan: they are as
+  // unknowable from here as the unknown ones PlanningMap frees, the rest of
+  // the blind area still keeps plans out, and the look before every move
+  // checks the floor before the robot drives. Nothing unless boxed in like
+  // that, just after a pirouette.
+  std::optional<explore::Plan> PlanOutOfTheBlindArea();
 
   // The distance from which the robot looks at a goal cell: past the
   // camera's near range by a coarse cell, so that all of the cell is in view.
@@ -181,6 +209,7 @@ class Explorer {
   FrameMapper::Seen last_seen_;
   std::vector<core::MoveOutcome> motions_since_frame_;
   std::vector<Eigen::Vector2d> plan_;  // the plan being followed, for the live views
+  explore::PlannerOptions planner_options_;
   std::unique_ptr<explore::Planner> planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
   core::Pose2 start_pose_;

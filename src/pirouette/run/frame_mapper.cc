@@ -53,9 +53,10 @@ std::vector<localize::ColourSighting> ColouredHits(const cv::Mat3b& bgr, const c
 
 }  // namespace
 
-FrameMapper::FrameMapper(const MapperSetup& setup, MaskFunction mask, const core::Pose2& start)
+FrameMapper::FrameMapper(const MapperSetup& setup, FrameMasks masks, const core::Pose2& start)
     : setup_(setup),
-      mask_(std::move(mask)),
+      mask_(std::move(masks.mask)),
+      settling_left_(std::max(0, masks.settling_frames)),
       ipm_(setup.camera),
       extractor_(ipm_, setup.max_range_m),
       look_(explore::LookAheadOptions{setup.radius_m, camera::NearRange(ipm_), setup.max_range_m,
@@ -93,6 +94,31 @@ void FrameMapper::CheckExtent(const core::Pose2& odometry) {
 }
 
 FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
+  if (settling_left_ == 0) return MapFrame(frame);
+  CheckExtent(frame.odometry);
+  Seen seen;
+  {
+    run::StageTimer timer(perceive_s_);
+    seen.bgr = io::ToBgrMat(frame.image);
+    seen.mask = mask_(seen.bgr);
+    seen.profile = extractor_.Extract(seen.mask);
+  }
+  seen.pose = ToMap(frame.odometry);
+  settling_.push_back(frame);
+  if (--settling_left_ > 0) return seen;
+  return *MapSettlingFrames();
+}
+
+std::optional<FrameMapper::Seen> FrameMapper::MapSettlingFrames() {
+  settling_left_ = 0;
+  std::vector<robot::Frame> frames = std::move(settling_);
+  settling_.clear();
+  std::optional<Seen> last;
+  for (const robot::Frame& f : frames) last = MapFrame(f);
+  return last;
+}
+
+FrameMapper::Seen FrameMapper::MapFrame(const robot::Frame& frame) {
   CheckExtent(frame.odometry);
   Seen seen;
   {
@@ -215,6 +241,7 @@ void FrameMapper::Rebuild(bool from_stop_start) {
 }
 
 void FrameMapper::Finish() {
+  MapSettlingFrames();
   if (!graph_) return;
   int moved = -1;
   {
@@ -256,6 +283,8 @@ void FrameMapper::InsertBump(mapping::OccupancyGrid& grid, const core::Pose2& ma
 }
 
 void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
+  // A bump goes in after the frames before it.
+  MapSettlingFrames();
   const core::Pose2 map_T_robot = ToMap(odom_T_robot);
   if (graph_) {
     // The bump goes with the stop it was made at: the stop of the frame
@@ -285,6 +314,7 @@ void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
 
 void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
                                   const core::Pose2& map_T_robot, double leg_m) {
+  MapSettlingFrames();
   // With tracking, the stop's last frame's confirmation is put in again with it.
   if (tracker_ && !stop_events_.empty()) stop_events_.back().blocked_leg_m = leg_m;
   if (graph_ && !frame_profiles_.empty()) {

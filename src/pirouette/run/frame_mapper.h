@@ -48,6 +48,16 @@ double MaxMapSide(const MapperSetup& setup);
 // the frames in the order they were taken.
 using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
 
+// A run's floor masks: the function, and how many of the first frames the
+// segmenter behind it learns from before its masks hold
+// (vision::FloorSegmenter::SettlingFrames; 0 for a segmenter that does not
+// learn). Those frames are masked twice: once to learn, then again, in the
+// same order, to be mapped.
+struct FrameMasks {
+  MaskFunction mask;
+  int settling_frames = 0;
+};
+
 // Builds the occupancy grid of a run from its frames, the same way whether
 // they come live from a robot or from a recorded log, so that a log maps to
 // the map the run made. Each frame's obstacle profile goes into the grid
@@ -71,7 +81,7 @@ using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
 class FrameMapper {
  public:
   // The grid starts as 2 m square around `start` (odometry frame) and grows.
-  FrameMapper(const MapperSetup& setup, MaskFunction mask, const core::Pose2& start);
+  FrameMapper(const MapperSetup& setup, FrameMasks masks, const core::Pose2& start);
 
   struct Seen {
     cv::Mat3b bgr;   // the raw frame, BGR
@@ -84,6 +94,12 @@ class FrameMapper {
   // changed, when what the frame can see (its odometry ± the range) would
   // make the map's extent pass MaxMapSide: the odometry jumped, or the floor
   // is larger than the limit.
+  // The masks' settling frames (the first pirouette) are kept, not mapped,
+  // until the last of them: then all are masked again, with what the
+  // segmenter learnt from all of them, and mapped in order (a first frame
+  // that sees only a wall would otherwise be mapped with the wall's colour
+  // taken for the floor's). Until then the Seen's mask and profile are the
+  // learning pass's and its pose the odometry's in the map.
   Seen AddFrame(const robot::Frame& frame);
 
   // The map pose of an odometry pose (the same without tracking).
@@ -96,8 +112,8 @@ class FrameMapper {
   // The graph; none without it.
   const std::optional<localize::GraphTracker>& graph() const { return graph_; }
 
-  // Ends the run's mapping: with the graph, its last stop is matched and the
-  // map made again if stops moved. Nothing without the graph.
+  // Ends the run's mapping: settling frames still kept are mapped; with the
+  // graph, its last stop is matched and the map made again if stops moved.
   void Finish();
   // Where every frame is now in the map (the odometry's without tracking;
   // the tracker's or the graph's latest).
@@ -144,6 +160,14 @@ class FrameMapper {
   Eigen::Vector2d extent_lo_ = Eigen::Vector2d::Constant(1e300);
   Eigen::Vector2d extent_hi_ = Eigen::Vector2d::Constant(-1e300);
   MaskFunction mask_;
+  // The settling frames not yet mapped, and how many remain to be seen (0:
+  // settled, every frame is mapped as it comes).
+  std::vector<robot::Frame> settling_;
+  int settling_left_ = 0;
+  // Masks the settling frames again and maps them; the last one's Seen.
+  std::optional<Seen> MapSettlingFrames();
+  // Perceives a frame and maps it (AddFrame once settled).
+  Seen MapFrame(const robot::Frame& frame);
   camera::InversePerspectiveMap ipm_;
   vision::ProfileExtractor extractor_;  // the profile tables, built once
   // With tracking: the longer profile the tracker matches the frames with.

@@ -108,7 +108,8 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
   std::unique_ptr<vision::FloorSegmenter> segmenter =
       vision::MakeFloorSegmenter(method, setup.camera);
   FrameMapper mapper(
-      setup, [&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); },
+      setup,
+      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames()},
       log.rows.front().odometry);
   ExplorationResult result;
   run::ProgressLine progress(quiet);

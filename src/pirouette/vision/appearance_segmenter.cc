@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <utility>
+#include <vector>
 
 #include "pirouette/vision/binomial_blur.h"
 #include "pirouette/vision/mask_upsampler.h"
@@ -65,6 +66,7 @@ void AppearanceSegmenter::MakeGrid(cv::Size frame,
   grid.texture.emplace(grid.scale, options_.texture_window, blur_order_, full_corrector);
   grid.reference = ReferenceRegionMask(grid.cells, options_.reference);
   grid.seeds = grid.reference.clone();
+  grid.everywhere = cv::Mat1b(grid.cells, std::uint8_t{255});
   if (options_.bottom_rows > 0) {
     const int from =
         std::max(0, grid.cells.height - options_.reference.margin - options_.bottom_rows);
@@ -128,6 +130,14 @@ void AppearanceSegmenter::Bootstrap(const cv::Mat1w& colour_bins, const cv::Mat1
   sample.texture = *texture_histogram;
   sample.model.Learn(sample.colour);
   const auto threshold = static_cast<float>(options_.colour_threshold);
+  // A frame of one appearance all over (a wall filling the view, or open
+  // floor to the top) says nothing of which appearance is the floor's: it
+  // does not vote.
+  if (colour_.learnt() &&
+      sample.model.Coverage(FloorColourModel::Histogram(colour_bins, grid_.everywhere),
+                            threshold) >= options_.open_top_share) {
+    return;
+  }
   const std::size_t n = samples_.size();
   for (std::size_t i = 0; i < n; ++i) {
     const bool agree = std::min(samples_[i].model.Coverage(sample.colour, threshold),
@@ -216,6 +226,7 @@ cv::Mat1b AppearanceSegmenter::Segment(const cv::Mat3b& bgr_raw) {
   }
 
   const auto threshold = static_cast<float>(options_.colour_threshold);
+  StrongSeeds(texture);
   PassTable(colour_.likelihoods(), threshold, pass_);
   FloorFrom(pass_);
   for (int pass = 0; pass < options_.refine_passes; ++pass) {
@@ -231,12 +242,50 @@ cv::Mat1b AppearanceSegmenter::Segment(const cv::Mat3b& bgr_raw) {
     FloorFrom(pass_);
   }
 
-  learn_region_.create(grid_.cells);
-  cv::bitwise_and(reference, floor_, learn_region_);
-  colour_.Learn(FloorColourModel::Histogram(bins_, learn_region_));
-  LearnTexture(texture, learn_region_);
+  if (SeesFloorEnd()) {
+    learn_region_.create(grid_.cells);
+    cv::bitwise_and(reference, floor_, learn_region_);
+    // ...where its colour lies well within the model.
+    const std::vector<float>& likelihood = colour_.likelihoods();
+    const auto learn_min = static_cast<float>(options_.learn_colour_likelihood);
+    for (int v = 0; v < grid_.cells.height; ++v) {
+      const std::uint16_t* b = bins_[v];
+      std::uint8_t* learn = learn_region_[v];
+      for (int u = 0; u < grid_.cells.width; ++u) {
+        if (likelihood[b[u]] < learn_min) learn[u] = 0;
+      }
+    }
+    colour_.Learn(FloorColourModel::Histogram(bins_, learn_region_));
+    LearnTexture(texture, learn_region_);
+  }
   if (scale == 1) return floor_.clone();
   return UpsampleFloorMask(floor_, corrected, bgr_raw, scale, corrector_);
+}
+
+void AppearanceSegmenter::StrongSeeds(const cv::Mat1b& texture) {
+  const std::vector<float>& colour = colour_.likelihoods();
+  const auto colour_min = static_cast<float>(options_.seed_colour_likelihood);
+  const auto texture_min = static_cast<float>(options_.seed_texture_likelihood);
+  strong_seeds_.create(grid_.cells);
+  for (int v = 0; v < grid_.cells.height; ++v) {
+    const std::uint8_t* seed = grid_.seeds[v];
+    const std::uint16_t* b = bins_[v];
+    const std::uint8_t* t = texture[v];
+    std::uint8_t* out = strong_seeds_[v];
+    for (int u = 0; u < grid_.cells.width; ++u) {
+      out[u] =
+          seed[u] != 0 && colour[b[u]] >= colour_min && texture_likelihood_[t[u]] >= texture_min
+              ? 255
+              : 0;
+    }
+  }
+}
+
+bool AppearanceSegmenter::SeesFloorEnd() const {
+  const std::uint8_t* top = floor_[0];
+  const auto open = static_cast<double>(
+      std::count_if(top, top + grid_.cells.width, [](std::uint8_t f) { return f != 0; }));
+  return open < options_.open_top_share * grid_.cells.width;
 }
 
 void AppearanceSegmenter::FloorFrom(const std::vector<std::uint8_t>& pass) {
@@ -265,7 +314,7 @@ void AppearanceSegmenter::FloorFrom(const std::vector<std::uint8_t>& pass) {
       e[u] = static_cast<std::uint8_t>(fine_ok & bar[u]);
     }
   }
-  FillFromSeeds(candidate_, grid_.seeds, floor_);
+  FillFromSeeds(candidate_, strong_seeds_, floor_);
   if (closer_) closer_->Close(floor_);
   grower_.Grow(floor_, allowed_, options_.grow_steps);
   grower_.Grow(floor_, edge_allowed_, 1);

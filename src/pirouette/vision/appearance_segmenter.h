@@ -60,6 +60,29 @@ struct AppearanceSegmenterOptions {
   // kept, and when more of them agree on another appearance than on the
   // model's, the model is learnt afresh from those (see Segment). 0 turns it off.
   int bootstrap_frames = 12;
+  // The floor starts only from seed cells (the reference region and the
+  // bottom rows) whose colour and texture are typical of the floor, not
+  // merely possible: likelihoods at least these (the tests above then let the
+  // floor grow). A frame filled by a wall a few centimetres away, its colour
+  // a shade off the floor's (one lightness bin: likelihood 0.5 after the
+  // model's smoothing) or its texture in the tail of the floor's, then has no
+  // floor (every column blind) instead of all floor.
+  double seed_colour_likelihood = 0.6;
+  double seed_texture_likelihood = 0.3;
+  // The model learns from the reference region's floor cells whose colour
+  // likelihood is at least this: an obstacle's colour in the model's tail
+  // (one that passed for the floor's) does not widen the model frame after
+  // frame, while a real floor's broad histogram (camera noise, uneven light,
+  // most of its pixels well below its peak) keeps its breadth.
+  double learn_colour_likelihood = 0.45;
+  // A frame whose floor reaches the top row in at least this share of the
+  // columns shows no end of the floor: a robot facing a wall a few
+  // centimetres away sees only wall, and where that wall's colour passes for
+  // the floor's the whole frame is called floor. The model does not learn
+  // from such a frame, so that it does not drift to the wall's colour; and
+  // while bootstrapping, a reference region whose colours cover this share of
+  // its whole frame (one appearance all over) does not vote.
+  double open_top_share = 0.9;
   // Two reference regions agree when each one's colour model calls at least
   // this share of the other's pixels floor-coloured (at colour_threshold).
   double bootstrap_agreement = 0.8;
@@ -74,15 +97,19 @@ struct AppearanceSegmenterOptions {
 // scale); both must be common. The candidate floor is cut by the non-vertical Canny edges, as in
 // the paper (near-vertical edges, the sides of obstacles, do not cut it: they
 // are left out of the boundary), and the floor is the part connected to the
-// reference region or to the bottom rows, closed and grown back to the edges. A refinement pass
+// reference region or to the bottom rows (where those look typical of the floor, not merely
+// possible: a view filled by a wall that passes for the floor has no floor), closed and grown
+// back to the edges. A refinement pass
 // then weighs, within the frame, the colours of the floor just found against those of the rest (the
 // two-class idea of GrabCut, with histograms and no graph cut), which removes colours the reference
-// region shares with walls. Later frames learn from the part of the reference region found floor,
-// with exponential forgetting, so the model follows the light and an obstacle right in front of the
-// robot is not learnt as floor. The first frame alone may be filled by an
-// obstacle (a wall a few cm away), so over the first pirouette the model
-// follows the appearance most reference regions agree on, the majority vote of
-// the paper's assumption that the reference region is floor.
+// region shares with walls. Later frames learn from the part of the reference region found floor
+// whose colour lies well within the model, with exponential forgetting, so the model follows the
+// light and an obstacle right in front of the robot is not learnt as floor; a frame whose floor
+// does not end (no boundary: a wall fills the view) teaches nothing. The first frame alone may be
+// filled by an obstacle (a wall a few cm away), so over the first pirouette the model follows the
+// appearance most reference regions agree on, the majority vote of the paper's assumption that the
+// reference region is floor (a frame of one appearance all over does not vote); run::FrameMapper
+// maps the first pirouette's frames again once the vote is in (SettlingFrames).
 //
 // Speed: all the steps above run on the working grid (options.working_width:
 // 160×120 cells for 320×240 and 640×480 frames), with the texture measured at
@@ -98,6 +125,9 @@ class AppearanceSegmenter : public FloorSegmenter {
                       const AppearanceSegmenterOptions& options);
 
   cv::Mat1b Segment(const cv::Mat3b& bgr_raw) override;
+  // The first pirouette, over which the model follows the majority of the
+  // reference regions (options.bootstrap_frames).
+  int SettlingFrames() const override { return options_.bootstrap_frames; }
 
   const FloorColourModel& colour_model() const { return colour_; }
 
@@ -112,8 +142,9 @@ class AppearanceSegmenter : public FloorSegmenter {
     cv::Size cells;
     std::optional<EdgeDetector> edges;
     std::optional<TextureFeature> texture;
-    cv::Mat1b reference;  // the reference region's mask, on the grid
-    cv::Mat1b seeds;      // where floor components may start: reference or bottom rows
+    cv::Mat1b reference;   // the reference region's mask, on the grid
+    cv::Mat1b seeds;       // where floor components may start: reference or bottom rows
+    cv::Mat1b everywhere;  // all 255
   };
   void MakeGrid(cv::Size frame, const std::optional<camera::CameraModel>& camera);
 
@@ -130,6 +161,12 @@ class AppearanceSegmenter : public FloorSegmenter {
   // be floor) of the low-passed cells and of the finely low-passed ones, into
   // floor_ (see Segment).
   void FloorFrom(const std::vector<std::uint8_t>& pass);
+  // Whether floor_ ends below the top row in enough columns (see
+  // options.open_top_share) for the frame to be learnt from.
+  bool SeesFloorEnd() const;
+  // strong_seeds_: the seed cells whose colour and texture are typical of the
+  // floor (options.seed_colour_likelihood, seed_texture_likelihood).
+  void StrongSeeds(const cv::Mat1b& texture);
 
   // One reference region's appearance, kept while bootstrapping.
   struct ReferenceSample {
@@ -167,6 +204,7 @@ class AppearanceSegmenter : public FloorSegmenter {
   cv::Mat1b edge_allowed_;
   cv::Mat1b floor_;
   cv::Mat1b learn_region_;
+  cv::Mat1b strong_seeds_;
   std::vector<std::uint8_t> pass_;  // per colour bin: passes the colour test
   std::optional<MaskCloser> closer_;
   MaskGrower grower_;

@@ -23,6 +23,12 @@ class FloorSegmenter {
   // vignetted): 255 floor, 0 not, the frame's size. With a camera, the frame
   // must have the camera's size (callers check input; a mismatch is a bug).
   virtual cv::Mat1b Segment(const cv::Mat3b& bgr_raw) = 0;
+
+  // How many first frames the segmenter learns the floor's appearance from
+  // before its masks hold (0: from the first). A run's first frames are its
+  // first pirouette: their masks are to be made again once it has seen them
+  // all (run::FrameMapper does).
+  virtual int SettlingFrames() const { return 0; }
 };
 
 enum class SegmentationMethod {

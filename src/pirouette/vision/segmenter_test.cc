@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include <opencv2/imgproc.hpp>
 
@@ -20,13 +21,14 @@ constexpr int kBoxBase = 70;  // the box stands on the floor: its base is row 70
 constexpr int kBoxLeft = 50;
 constexpr int kBoxRight = 110;
 
-// A 160×120 picture: a light wall, a grey floor with fine noise, and a red box
+// A 160×120 picture: a light wall, a grey floor with fine noise (its grain
+// `grain` grey levels, one standard deviation a channel), and a red box
 // standing on the floor in the middle.
-cv::Mat3b FloorWithBox() {
+cv::Mat3b FloorWithBox(double grain = 3.0) {
   cv::Mat3b image(120, 160, cv::Vec3b(90, 95, 100));
   cv::Mat noise(image.size(), CV_16SC3);
   cv::RNG rng(7);
-  rng.fill(noise, cv::RNG::NORMAL, 0, 3);
+  rng.fill(noise, cv::RNG::NORMAL, 0, grain);
   cv::Mat3s shifted;
   image.convertTo(shifted, CV_16SC3);
   shifted += noise;
@@ -211,6 +213,69 @@ TEST(AppearanceSegmenterTest, AConsistentStartIsLearntAsBefore) {
     const cv::Mat1b b = without.Segment(FloorWithBox());
     EXPECT_EQ(cv::countNonZero(a != b), 0) << "frame " << frame;
   }
+}
+
+// A view filled by a wall a few cm away of the floor's colour, a little
+// darker in its shade and with a finer grain than the floor's (both in the
+// tails of the floor's models), as a robot facing a wall closer than the
+// camera's near range sees it.
+cv::Mat3b WallNearTheFloorsLook() {
+  cv::Mat3b image(120, 160, cv::Vec3b(82, 87, 92));
+  cv::Mat noise(image.size(), CV_16SC3);
+  cv::RNG rng(13);
+  rng.fill(noise, cv::RNG::NORMAL, 0, 1.5);
+  cv::Mat3s shifted;
+  image.convertTo(shifted, CV_16SC3);
+  shifted += noise;
+  shifted.convertTo(image, CV_8UC3);
+  return image;
+}
+
+// A floor with a visible grain, as a carpet's or the simulator's.
+constexpr double kGrain = 8.0;
+
+TEST(AppearanceSegmenterTest, AViewFilledByAWallThatPassesForTheFloorHasNoFloor) {
+  const auto segmenter_after_the_floor = [](const AppearanceSegmenterOptions& options) {
+    auto segmenter = std::make_unique<AppearanceSegmenter>(std::nullopt, options);
+    for (int frame = 0; frame < 13; ++frame) segmenter->Segment(FloorWithBox(kGrain));
+    return segmenter;
+  };
+  const cv::Vec3b wall(82, 87, 92);  // the wall's colour, as WallNearTheFloorsLook
+  // The wall's colour passes the floor's colour test...
+  AppearanceSegmenterOptions any_seed;
+  any_seed.seed_colour_likelihood = 0.0;
+  any_seed.seed_texture_likelihood = 0.0;
+  auto permissive = segmenter_after_the_floor(any_seed);
+  EXPECT_GE(permissive->colour_model().Likelihood(wall), 0.1f);
+  // ...so with any seed some of the view is floor,
+  EXPECT_GT(cv::countNonZero(permissive->Segment(WallNearTheFloorsLook())), 1000);
+  // but the floor starts only where the view looks typical of the floor: none.
+  auto segmenter = segmenter_after_the_floor(AppearanceSegmenterOptions{});
+  const float before = segmenter->colour_model().Likelihood(wall);
+  for (int frame = 0; frame < 4; ++frame) {
+    EXPECT_EQ(cv::countNonZero(segmenter->Segment(WallNearTheFloorsLook())), 0)
+        << "frame " << frame;
+  }
+  // A view with no end of the floor teaches the model nothing...
+  EXPECT_EQ(segmenter->colour_model().Likelihood(wall), before);
+  // ...and the floor is found as before.
+  const cv::Mat1b mask = segmenter->Segment(FloorWithBox(kGrain));
+  EXPECT_EQ(mask(110, 80), 255);
+  EXPECT_EQ(mask(50, 80), 0);
+  for (int u = 5; u < kBoxLeft - 3; u += 4) {
+    EXPECT_NEAR(BoundaryRow(mask, u), kWallBottom - 1, 2) << "column " << u;
+  }
+}
+
+TEST(AppearanceSegmenterTest, AViewOfOneAppearanceAllOverDoesNotVote) {
+  // A pirouette started between walls: more of its views are filled by one
+  // wall than show the floor, but those say nothing of which is the floor.
+  AppearanceSegmenter segmenter(std::nullopt, AppearanceSegmenterOptions{});
+  segmenter.Segment(FloorWithBox());
+  for (int frame = 0; frame < 5; ++frame) segmenter.Segment(WallCloseUp());
+  for (int frame = 0; frame < 2; ++frame) segmenter.Segment(FloorWithBox());
+  EXPECT_LT(segmenter.colour_model().Likelihood(cv::Vec3b(220, 225, 230)), 0.1f);
+  EXPECT_EQ(segmenter.Segment(FloorWithBox())(110, 80), 255);
 }
 
 TEST(EdgeMapTest, MarksEdgesAlongTheWorldVerticalOnly) {
