@@ -34,8 +34,8 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
                                      out.string() + " --max-steps 4 --video --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.output();
   EXPECT_TRUE(run.stdout_only.empty()) << run.stdout_only;
-  for (const char* name :
-       {"map.yaml", "map.pgm", "map.png", "map_colours.png", "run.json", "explore.mp4"}) {
+  for (const char* name : {"map.yaml", "map.pgm", "map.png", "map_colours.png", "run.json",
+                           "explore.mp4", "graph.g2o"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   EXPECT_FALSE(fs::exists(out / "explore.mp4.partial.mp4"));
@@ -44,6 +44,9 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
   EXPECT_EQ(json["status"], "step-limit");
   EXPECT_EQ(json["moves"], 4);
   EXPECT_EQ(json["seed"], 1);
+  // The pose graph is on by default.
+  EXPECT_EQ(json["localization"]["method"], "graph");
+  EXPECT_TRUE(json.contains("pose_error"));
   EXPECT_GE(json["pirouettes"].get<int>(), 1);
   EXPECT_GE(json["frames"].get<int>(), 12);
   for (const char* field : {"turns", "path_length_m", "rotation_deg", "wall_time_s"}) {
@@ -82,6 +85,11 @@ TEST(ExploreCliTest, BadInputIsRefusedWithExitTwo) {
   EXPECT_NE(steps.stderr_only.find("--max-steps"), std::string::npos) << steps.stderr_only;
   EXPECT_EQ(RunPirouette("explore --world " + World("soccer_field") + " --planner astar").exit_code,
             2);
+  const RunResult model = RunPirouette("explore --world " + World("soccer_field") + " --out " +
+                                       out.string() + " --odometry-model 0.05,-1");
+  EXPECT_EQ(model.exit_code, 2);
+  EXPECT_NE(model.stderr_only.find("--odometry-model"), std::string::npos) << model.stderr_only;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

@@ -29,9 +29,10 @@ constexpr const char* kExploreHelp =
 struct ExploreChoices {
   std::string planner = "dt";
   std::string method = "default";
-  std::string localize = "none";
+  std::string localize = "graph";
   std::vector<double> odometry_noise;  // {} or {translation, rotation}
   std::vector<double> odometry_bias;   // {} or {translation, rotation}
+  std::vector<double> odometry_model;  // {} or {translation, rotation}
   Ros2Choices ros2;
   ViewChoices view;
 };
@@ -56,6 +57,7 @@ void AddExplorationOptions(CLI::App* cmd, run::ExploreRequest& request, ExploreC
   cmd->add_flag("--return-home", request.options.return_home,
                 "drive back to the start when the map is complete");
   AddOdometryOptions(cmd, choices.odometry_noise, choices.odometry_bias);
+  AddOdometryModelOption(cmd, choices.odometry_model);
 }
 
 // A real robot instead of the simulated one, and what else is written.
@@ -94,6 +96,9 @@ void Explore(run::ExploreRequest& request, const ExploreChoices& choices) {
   }
   if (!choices.odometry_bias.empty()) {
     request.odometry_bias = {choices.odometry_bias[0], choices.odometry_bias[1]};
+  }
+  if (!choices.odometry_model.empty()) {
+    request.odometry_model = {choices.odometry_model[0], choices.odometry_model[1]};
   }
   request.options.planner = *run::ParsePlannerKind(choices.planner);
   request.options.method = *vision::ParseMaskSource(choices.method);

@@ -35,7 +35,7 @@ Command AddMapCommand(CLI::App& parent) {
   AddMaxRangeOption(cmd, request->max_range_m, "the log's, else the paper's rule");
   AddMaxMapOption(cmd, request->max_map_m, "ends the mapping there (status truncated)");
   AddMethodOption(cmd, request->method, kSegmentationMethods, "the log's");
-  AddLocalizeOption(cmd, request->localize, "the log's, else none");
+  AddLocalizeOption(cmd, request->localize, "the log's, else graph");
   AddRos2PublishOptions(cmd, *ros2);
   AddViewOptions(cmd, *view, false);
   AddQuietOption(cmd, request->quiet);

@@ -197,6 +197,17 @@ void AddOdometryOptions(CLI::App* app, std::vector<double>& noise, std::vector<d
       ->expected(2);
 }
 
+void AddOdometryModelOption(CLI::App* app, std::vector<double>& model) {
+  app->add_option("--odometry-model", model,
+                  "T,R: what the pose graph (--localize graph) believes of the odometry: the "
+                  "standard deviations of a straight move's error as a fraction of its length "
+                  "and of a turn's as a fraction of its angle, e.g. 0.05,0.03 for a robot whose "
+                  "wheels slip little (default: 0.08,0.08 for a real robot; in the simulator "
+                  "the world's odometry_noise with --odometry-noise and --odometry-bias)")
+      ->delimiter(',')
+      ->expected(2);
+}
+
 CLI::Option* AddRangeFactorOption(CLI::App* app, double& range_factor) {
   return app
       ->add_option("--range-factor", range_factor,

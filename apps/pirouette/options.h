@@ -88,6 +88,8 @@ CLI::Option* AddMaxStepsOption(CLI::App* app, int& max_steps);
 // --odometry-noise and --odometry-bias of the simulated robot: T,R each, or
 // left empty for the world file's.
 void AddOdometryOptions(CLI::App* app, std::vector<double>& noise, std::vector<double>& bias);
+// --odometry-model T,R: the pose graph's odometry model (run::ExploreRequest::odometry_model).
+void AddOdometryModelOption(CLI::App* app, std::vector<double>& model);
 
 // --range-factor: how far a pirouette and the map's views are read, in
 // times the map's range.

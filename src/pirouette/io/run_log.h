@@ -31,7 +31,7 @@ struct RunLogInfo {
   double cell_m = 0.0;       // the map's cell the run used (0: not said)
   double max_range_m = 0.0;  // the readings' trusted range (0: not said)
   std::string method;        // segmentation: "default", "paper" (empty: not said)
-  std::string localize;      // pose tracking: "graph", "scan", "none" (empty: not said, none)
+  std::string localize;      // pose tracking: "graph", "scan", "none" (empty: not said, graph)
   // The pose graph's odometry model (standard deviations as fractions of a
   // move and of a turn: localize::OdometryModel); none: not said.
   std::optional<std::array<double, 2>> odometry_model;

@@ -78,7 +78,7 @@ struct ExplorationOptions {
   // Drive back to the start at the end.
   bool return_home = false;
   // Pose tracking, and what it assumes of the odometry.
-  LocalizeKind localize = LocalizeKind::kNone;
+  LocalizeKind localize = LocalizeKind::kGraph;
   localize::TrackerOptions tracker;
   // The graph's options; in the simulator its odometry model is the world's
   // noise (OdometryModelOf).

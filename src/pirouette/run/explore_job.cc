@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -408,10 +409,19 @@ ExploreReport RunExplore(const ExploreRequest& request) {
                                                      request.odometry_noise, request.odometry_bias);
   }
   CheckExplorationOptions(options);
-  // In the simulator the graph's odometry model is the world's noise (Explore sets it too).
-  if (world) {
+  // The graph's odometry model: the request's, else in the simulator the
+  // world's noise (Explore sets it too).
+  if (request.odometry_model) {
+    options.graph.odometry.translation_fraction = (*request.odometry_model)[0];
+    options.graph.odometry.rotation_fraction = (*request.odometry_model)[1];
+  } else if (world) {
     options.graph.odometry =
         OdometryModelOf(options.odometry_noise.value_or(world->robot().odometry_noise));
+  }
+  try {
+    options.graph.odometry.Check();
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError("--odometry-model", 0, "", e.what());
   }
   const RunWatchers watchers(request.ros2_publish, request.live_view);
   if (watchers.view != nullptr) {

@@ -84,12 +84,13 @@ MapperSetup SetupOf(const MapLogRequest& request, const io::RunLog& log,
   return setup;
 }
 
-// Whether to track: the request's, else the log's, else none.
+// How to localize: the request's, else the log's, else the pose graph (the
+// default, as explore's).
 LocalizeKind LocalizeOf(const MapLogRequest& request, const io::RunLog& log,
                         const std::string& log_yaml) {
   const std::string name = !request.localize.empty()    ? request.localize
                            : !log.info.localize.empty() ? log.info.localize
-                                                        : "none";
+                                                        : "graph";
   const std::optional<LocalizeKind> localize = ParseLocalizeKind(name);
   if (!localize) {
     throw core::InputError(request.localize.empty() ? log_yaml : "--localize", 0,
