@@ -484,8 +484,9 @@ ExploreReport RunExplore(const ExploreRequest& request) {
       RunJson(request, report.result,
               world ? eval::MapEvaluationToJson(eval::EvaluateMap(map, *world)) : nlohmann::json());
   if (!report.record_error.empty()) report.run["record_error"] = report.record_error;
-  if (run_base.contains("odometry_noise"))
+  if (run_base.contains("odometry_noise")) {
     report.run["odometry_noise"] = run_base["odometry_noise"];
+  }
   checkpoints.Report(report.run);
   io::WriteFileAtomically((out / "run.json").string(), report.run.dump(2) + "\n");
   if (video) video->Finish();
