@@ -98,7 +98,7 @@ void Explore(run::ExploreRequest& request, const ExploreChoices& choices) {
     request.odometry_bias = {choices.odometry_bias[0], choices.odometry_bias[1]};
   }
   if (!choices.odometry_model.empty()) {
-    request.odometry_model = {choices.odometry_model[0], choices.odometry_model[1]};
+    request.options.odometry_model = {choices.odometry_model[0], choices.odometry_model[1]};
   }
   request.options.planner = *run::ParsePlannerKind(choices.planner);
   request.options.method = *vision::ParseMaskSource(choices.method);

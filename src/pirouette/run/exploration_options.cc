@@ -36,10 +36,17 @@ std::optional<LocalizeKind> ParseLocalizeKind(std::string_view name) {
   return std::nullopt;
 }
 
-localize::OdometryModel OdometryModelOf(const core::OdometryNoise& noise) {
-  localize::OdometryModel model;
-  model.translation_fraction = std::hypot(noise.translation, noise.translation_bias);
-  model.rotation_fraction = std::hypot(noise.rotation, noise.rotation_bias);
+localize::OdometryModel GraphOdometryModel(const ExplorationOptions& options,
+                                           const core::OdometryNoise* world_noise) {
+  localize::OdometryModel model = options.graph.odometry;
+  if (options.odometry_model) {
+    model.translation_fraction = (*options.odometry_model)[0];
+    model.rotation_fraction = (*options.odometry_model)[1];
+  } else if (world_noise != nullptr) {
+    const core::OdometryNoise& noise = options.odometry_noise.value_or(*world_noise);
+    model.translation_fraction = std::hypot(noise.translation, noise.translation_bias);
+    model.rotation_fraction = std::hypot(noise.rotation, noise.rotation_bias);
+  }
   return model;
 }
 
@@ -64,6 +71,11 @@ void CheckExplorationOptions(const ExplorationOptions& options) {
     throw core::InputError("--max-map-m", 0, "", "must be a number > 0 (metres)");
   }
   if (options.odometry_noise) core::CheckOdometryNoise(*options.odometry_noise);
+  try {
+    GraphOdometryModel(options, nullptr).Check();
+  } catch (const std::invalid_argument& e) {
+    throw core::InputError("--odometry-model", 0, "", e.what());
+  }
 }
 
 }  // namespace pirouette::run

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <optional>
@@ -80,9 +81,12 @@ struct ExplorationOptions {
   // Pose tracking, and what it assumes of the odometry.
   LocalizeKind localize = LocalizeKind::kGraph;
   localize::TrackerOptions tracker;
-  // The graph's options; in the simulator its odometry model is the world's
-  // noise (OdometryModelOf).
+  // The graph's options; its odometry model is GraphOdometryModel's.
   localize::GraphTrackerOptions graph;
+  // What the graph believes of the odometry, {translation, rotation} as
+  // localize::OdometryModel's fractions (--odometry-model); none: the
+  // simulator's own noise in the simulator, graph.odometry's on a real robot.
+  std::optional<std::array<double, 2>> odometry_model;
   // The simulator's motion error; none: the world file's odometry_noise.
   std::optional<core::OdometryNoise> odometry_noise;
   // Checked between steps; when it becomes true the run ends with status
@@ -92,10 +96,13 @@ struct ExplorationOptions {
   const RunControl* control = nullptr;
 };
 
-// The graph's odometry model for a simulated robot of this noise: the
-// standard deviations with the biases (a bias is an error the graph cannot
-// tell from noise), in quadrature.
-localize::OdometryModel OdometryModelOf(const core::OdometryNoise& noise);
+// The graph's odometry model: options.odometry_model's fractions when given;
+// else, in the simulator (`world_noise` set), the simulated noise
+// (options.odometry_noise, else the world's): the standard deviations with the
+// biases (a bias is an error the graph cannot tell from noise), in
+// quadrature; else options.graph.odometry.
+localize::OdometryModel GraphOdometryModel(const ExplorationOptions& options,
+                                           const core::OdometryNoise* world_noise);
 
 // Throws core::InputError naming the option for a bad value.
 void CheckExplorationOptions(const ExplorationOptions& options);

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -409,20 +408,9 @@ ExploreReport RunExplore(const ExploreRequest& request) {
                                                      request.odometry_noise, request.odometry_bias);
   }
   CheckExplorationOptions(options);
-  // The graph's odometry model: the request's, else in the simulator the
-  // world's noise (Explore sets it too).
-  if (request.odometry_model) {
-    options.graph.odometry.translation_fraction = (*request.odometry_model)[0];
-    options.graph.odometry.rotation_fraction = (*request.odometry_model)[1];
-  } else if (world) {
-    options.graph.odometry =
-        OdometryModelOf(options.odometry_noise.value_or(world->robot().odometry_noise));
-  }
-  try {
-    options.graph.odometry.Check();
-  } catch (const std::invalid_argument& e) {
-    throw core::InputError("--odometry-model", 0, "", e.what());
-  }
+  // What the run log records; the simulated Explore derives the same.
+  options.graph.odometry =
+      GraphOdometryModel(options, world ? &world->robot().odometry_noise : nullptr);
   const RunWatchers watchers(request.ros2_publish, request.live_view);
   if (watchers.view != nullptr) {
     if (request.on_view) request.on_view(watchers.view->endpoint());

@@ -40,10 +40,6 @@ struct ExploreRequest {
   // as fractions of each move (core::OdometryNoise).
   std::optional<std::array<double, 2>> odometry_noise;
   std::optional<std::array<double, 2>> odometry_bias;
-  // What the pose graph believes of the odometry, {translation, rotation}
-  // (localize::OdometryModel's fractions): a real robot's setting (default
-  // 0.08, 0.08); in the simulator the world's noise unless given.
-  std::optional<std::array<double, 2>> odometry_model;
   // Set: publish the run to ROS 2 over DDS as it goes (Ros2RunPublisher).
   std::optional<Ros2PublishOptions> ros2_publish;
   // Set: serve the live view (LiveViewPublisher) from before the robot is

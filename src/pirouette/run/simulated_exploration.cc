@@ -15,10 +15,8 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
                           const ExplorationObserver& observer) {
   CheckExplorationOptions(options);
   const camera::CameraModel& camera = world.robot().camera;
-  // The graph's odometry model: the simulator's own noise.
   ExplorationOptions explore_options = options;
-  explore_options.graph.odometry =
-      OdometryModelOf(options.odometry_noise.value_or(world.robot().odometry_noise));
+  explore_options.graph.odometry = GraphOdometryModel(options, &world.robot().odometry_noise);
   sim::SimulatedRobot simulated(world, options.seed, options.odometry_noise);
   sim::SimRobot& robot = simulated.robot();
   eval::FloorMasker masker(options.method, world, camera);
