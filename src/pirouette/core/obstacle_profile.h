@@ -9,7 +9,8 @@ namespace pirouette::core {
 // (Taylor, Geva & Boles 2005, §3: the floor's edge read as a range sensor).
 enum class ReadingKind {
   kHit,    // the floor ends at range_m, within the maximum range: an obstacle's base
-  kClear,  // floor is seen all the way out to the maximum range; range_m = max range
+  kClear,  // floor is seen all the way out to range_m: the maximum range, or less where
+           // what lies past it is unresolved (vision::FloorSegmenter::Unresolved)
   kBlind,  // no floor is seen at all at this bearing: something fills the view;
            // range_m = the range of the nearest floor point the camera could see there
 };

@@ -110,7 +110,7 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
         const auto start = std::chrono::steady_clock::now();
         const cv::Mat1b mask = masker.Mask(io::ToBgrMat(frame.frame.image), frame.world_T_robot);
         const core::ObstacleProfile measured =
-            vision::ExtractProfile(mask, ipm, result.max_range_m);
+            vision::ExtractProfile(mask, ipm, result.max_range_m, masker.Unresolved());
         seconds += since(start);
         const core::ObstacleProfile truth =
             caster.TrueProfile(frame.world_T_robot, result.max_range_m);

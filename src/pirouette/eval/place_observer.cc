@@ -74,7 +74,7 @@ localize::ObservedPlace PlaceObserver::Observe(const core::Pose2& world_T_robot,
     const cv::Mat1b mask = impl_->masker.Mask(bgr, frame.world_T_robot);
     localize::PirouetteFrame view;
     view.heading_rad = frame.frame.odometry.heading() - start_heading;
-    view.profile = impl_->extractor.Extract(mask);
+    view.profile = impl_->extractor.Extract(mask, impl_->masker.Unresolved());
     for (std::size_t u = 0; u < view.profile.readings.size(); ++u) {
       view.column_colours.push_back(view.profile.readings[u].kind == core::ReadingKind::kClear
                                         ? core::ColourClass::kNone

@@ -17,10 +17,18 @@ LookAhead::Finding LookAhead::Blocking(const core::ObstacleProfile& profile,
   const Eigen::Vector2d end(distance_m, 0.0);
   Finding finding;
   bool blind = false;
+  // A clear reading this much short of the max range is seen only to there.
+  constexpr double kShortM = 1e-6;
   for (const core::RangeReading& reading : profile.readings) {
-    if (reading.kind == core::ReadingKind::kClear) continue;
     const double x = reading.range_m * std::cos(reading.bearing_rad);
     const double y = reading.range_m * std::sin(reading.bearing_rad);
+    if (reading.kind == core::ReadingKind::kClear) {
+      if (reading.range_m < options_.max_range_m - kShortM && x > 0.0 &&
+          std::abs(y) < options_.radius_m) {
+        finding.seen_m = std::min(finding.seen_m, x - options_.radius_m);
+      }
+      continue;
+    }
     if (x <= 0.0) continue;
     if (reading.kind == core::ReadingKind::kHit) {
       // The base of an obstacle inside the swept corridor.

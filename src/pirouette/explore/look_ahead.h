@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 #include "pirouette/core/obstacle_profile.h"
@@ -43,10 +44,16 @@ class LookAhead {
     LookVerdict verdict = LookVerdict::kClear;
     // For kBlocked: the hits inside the swept corridor, robot frame.
     std::vector<Eigen::Vector2d> hits_robot;
+    // How far forward the frame vouches for the move: where a kClear reading
+    // short of the max range (the floor seen free to there, unresolved past
+    // it) crosses the swept corridor, the disc may go until its front
+    // reaches the nearest such point; infinity where none does.
+    double seen_m = std::numeric_limits<double>::infinity();
   };
   // Judges a forward move of `distance_m` (> 0) from the frame's profile,
   // taken facing the move (readings in the robot frame), and says where the
-  // way is blocked.
+  // way is blocked, and how far it is seen (Finding::seen_m: a move is
+  // vouched for only that far).
   Finding Blocking(const core::ObstacleProfile& profile, double distance_m) const;
 
  private:

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -46,6 +47,24 @@ TEST(LookAheadTest, AHitInTheSweptCorridorBlocksAndIsReturned) {
   ASSERT_EQ(finding.hits_robot.size(), 1U);
   EXPECT_NEAR(finding.hits_robot[0].x(), 0.20, 1e-12);
   EXPECT_NEAR(finding.hits_robot[0].y(), 0.0, 1e-12);
+}
+
+TEST(LookAheadTest, TheFloorSeenOnlyPartWayVouchesForTheMoveOnlyThatFar) {
+  // Clear to the max range: the whole move is vouched for.
+  EXPECT_EQ(PaperLook().Blocking(UniformProfile(ReadingKind::kClear, 0.40), 0.30).seen_m,
+            std::numeric_limits<double>::infinity());
+  // Straight ahead the floor is seen free to 25 cm and unresolved past it:
+  // the disc may go until its front is there.
+  core::ObstacleProfile profile = UniformProfile(ReadingKind::kClear, 0.40);
+  profile.readings[30] = {0.0, 0.25, ReadingKind::kClear};
+  const LookAhead::Finding finding = PaperLook().Blocking(profile, 0.30);
+  EXPECT_EQ(finding.verdict, LookVerdict::kClear);
+  EXPECT_TRUE(finding.hits_robot.empty());
+  EXPECT_NEAR(finding.seen_m, 0.25 - 0.04, 1e-12);
+  // Beside the corridor (25° left at 20 cm: 8.5 cm off the path) it does not matter.
+  core::ObstacleProfile beside = UniformProfile(ReadingKind::kClear, 0.40);
+  beside.readings[5] = {25.0 * std::numbers::pi / 180.0, 0.20, ReadingKind::kClear};
+  EXPECT_EQ(PaperLook().Blocking(beside, 0.30).seen_m, std::numeric_limits<double>::infinity());
 }
 
 TEST(LookAheadTest, HitsBeyondTheMoveOrBesideTheCorridorDoNotBlock) {

@@ -271,7 +271,8 @@ ExplorationResult ExploreRemote(robot::Robot& connected, const ExploreRequest& r
       robot_info.camera);
   return ExploreWithRobot(
       robot, robot_info, options,
-      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames()},
+      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames(),
+       [&]() -> const cv::Mat1b& { return segmenter->Unresolved(); }},
       observer);
 }
 

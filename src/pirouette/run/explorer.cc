@@ -334,7 +334,14 @@ Explorer::FollowOutcome Explorer::Follow(const explore::Plan& plan) {
         ++result_.blocked_looks;
         return FollowOutcome::kBlocked;
       }
-      if (!Drive(leg)) return FollowOutcome::kBlocked;
+      // Past where the floor ahead is unresolved the frame vouches for
+      // nothing: go as far as it does, and look again from there.
+      const double vouched = std::min(leg, finding.seen_m);
+      if (vouched < kReachedCells * cell_m_) {
+        ++result_.blocked_looks;
+        return FollowOutcome::kBlocked;
+      }
+      if (!Drive(vouched)) return FollowOutcome::kBlocked;
     }
   }
   return FollowOutcome::kReached;

@@ -56,6 +56,7 @@ std::vector<localize::ColourSighting> ColouredHits(const cv::Mat3b& bgr, const c
 FrameMapper::FrameMapper(const MapperSetup& setup, FrameMasks masks, const core::Pose2& start)
     : setup_(setup),
       mask_(std::move(masks.mask)),
+      unresolved_(std::move(masks.unresolved)),
       settling_left_(std::max(0, masks.settling_frames)),
       ipm_(setup.camera),
       extractor_(ipm_, setup.max_range_m),
@@ -101,7 +102,8 @@ FrameMapper::Seen FrameMapper::AddFrame(const robot::Frame& frame) {
     run::StageTimer timer(perceive_s_);
     seen.bgr = io::ToBgrMat(frame.image);
     seen.mask = mask_(seen.bgr);
-    seen.profile = extractor_.Extract(seen.mask);
+    if (unresolved_) seen.unresolved = unresolved_().clone();
+    seen.profile = extractor_.Extract(seen.mask, seen.unresolved);
   }
   seen.pose = ToMap(frame.odometry);
   settling_.push_back(frame);
@@ -125,7 +127,8 @@ FrameMapper::Seen FrameMapper::MapFrame(const robot::Frame& frame) {
     run::StageTimer timer(perceive_s_);
     seen.bgr = io::ToBgrMat(frame.image);
     seen.mask = mask_(seen.bgr);
-    seen.profile = extractor_.Extract(seen.mask);
+    if (unresolved_) seen.unresolved = unresolved_().clone();
+    seen.profile = extractor_.Extract(seen.mask, seen.unresolved);
     colour_frames_.push_back({frame.odometry, ColouredHits(seen.bgr, seen.mask, seen.profile)});
   }
   if (graph_) {
@@ -143,8 +146,9 @@ FrameMapper::Seen FrameMapper::MapFrame(const robot::Frame& frame) {
       before_stop_ = grid_;
       stop_events_.clear();
     }
-    stop_poses_ = tracker_->Track(*before_stop_, view_extractor_->Extract(seen.mask),
-                                  setup_.max_range_m, frame.odometry);
+    stop_poses_ =
+        tracker_->Track(*before_stop_, view_extractor_->Extract(seen.mask, seen.unresolved),
+                        setup_.max_range_m, frame.odometry);
   }
   stop_events_.push_back({seen.profile, std::nullopt});
   seen.pose = stop_poses_.back();
@@ -167,8 +171,8 @@ void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
   const bool starts = graph_->StartsStop(frame.odometry);
   {
     run::StageTimer timer(localize_s_);
-    moved = graph_->Track(grid_, view_extractor_->Extract(seen.mask), setup_.max_range_m,
-                          frame.odometry);
+    moved = graph_->Track(grid_, view_extractor_->Extract(seen.mask, seen.unresolved),
+                          setup_.max_range_m, frame.odometry);
   }
   const std::size_t k = frame_profiles_.size();
   frame_profiles_.push_back(seen.profile);

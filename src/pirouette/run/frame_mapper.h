@@ -56,6 +56,9 @@ using MaskFunction = std::function<cv::Mat1b(const cv::Mat3b& bgr_raw)>;
 struct FrameMasks {
   MaskFunction mask;
   int settling_frames = 0;
+  // Where the last mask's floor may go on unresolved
+  // (vision::FloorSegmenter::Unresolved); none when empty.
+  std::function<const cv::Mat1b&()> unresolved;
 };
 
 // Builds the occupancy grid of a run from its frames, the same way whether
@@ -84,8 +87,9 @@ class FrameMapper {
   FrameMapper(const MapperSetup& setup, FrameMasks masks, const core::Pose2& start);
 
   struct Seen {
-    cv::Mat3b bgr;   // the raw frame, BGR
-    cv::Mat1b mask;  // its floor, 255
+    cv::Mat3b bgr;         // the raw frame, BGR
+    cv::Mat1b mask;        // its floor, 255
+    cv::Mat1b unresolved;  // where its floor may go on unresolved (empty: nowhere)
     core::ObstacleProfile profile;
     core::Pose2 pose;  // where it went in the map (the odometry's, corrected)
   };
@@ -160,6 +164,7 @@ class FrameMapper {
   Eigen::Vector2d extent_lo_ = Eigen::Vector2d::Constant(1e300);
   Eigen::Vector2d extent_hi_ = Eigen::Vector2d::Constant(-1e300);
   MaskFunction mask_;
+  std::function<const cv::Mat1b&()> unresolved_;
   // The settling frames not yet mapped, and how many remain to be seen (0:
   // settled, every frame is mapped as it comes).
   std::vector<robot::Frame> settling_;

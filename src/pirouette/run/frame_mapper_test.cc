@@ -35,7 +35,7 @@ TEST(FrameMapperTest, TheSettlingFramesAreMaskedAgainAndMappedOnceAllAreSeen) {
     const bool settled = calls.size() > static_cast<std::size_t>(kSettling);
     return cv::Mat1b(bgr.size(), settled ? std::uint8_t{255} : std::uint8_t{0});
   };
-  FrameMapper mapper(PaperRobotSetup(), {learning, kSettling}, core::Pose2());
+  FrameMapper mapper(PaperRobotSetup(), {learning, kSettling, {}}, core::Pose2());
   for (int k = 0; k < kSettling - 1; ++k) {
     const FrameMapper::Seen seen = mapper.AddFrame(FrameNumber(k));
     EXPECT_EQ(mapper.grid().KnownCellCount(), 0U) << "frame " << k << " is not mapped yet";
@@ -48,7 +48,7 @@ TEST(FrameMapperTest, TheSettlingFramesAreMaskedAgainAndMappedOnceAllAreSeen) {
   // The map is that of the second pass's masks, frame by frame.
   FrameMapper settled(
       PaperRobotSetup(),
-      {[](const cv::Mat3b& bgr) { return cv::Mat1b(bgr.size(), std::uint8_t{255}); }, 0},
+      {[](const cv::Mat3b& bgr) { return cv::Mat1b(bgr.size(), std::uint8_t{255}); }, 0, {}},
       core::Pose2());
   for (int k = 0; k <= kSettling; ++k) settled.AddFrame(FrameNumber(k));
   EXPECT_GT(settled.grid().KnownCellCount(), 0U);
@@ -64,7 +64,8 @@ TEST(FrameMapperTest, ARunEndedWhileSettlingMapsWhatItSaw) {
                         ++calls;
                         return cv::Mat1b(bgr.size(), std::uint8_t{255});
                       },
-                      12},
+                      12,
+                      {}},
                      core::Pose2());
   mapper.AddFrame(FrameNumber(0));
   mapper.AddFrame(FrameNumber(1));

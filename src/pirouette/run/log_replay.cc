@@ -110,7 +110,8 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
       vision::MakeFloorSegmenter(method, setup.camera);
   FrameMapper mapper(
       setup,
-      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames()},
+      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames(),
+       [&]() -> const cv::Mat1b& { return segmenter->Unresolved(); }},
       log.rows.front().odometry);
   ExplorationResult result;
   run::ProgressLine progress(quiet);

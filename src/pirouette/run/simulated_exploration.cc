@@ -28,11 +28,11 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
     truth.push_back(robot.TruePose());
     if (observer.on_capture) observer.on_capture(frame, motions);
   };
-  ExplorationResult result =
-      ExploreWithRobot(robot, RobotDescription{camera, world.robot().radius}, explore_options,
-                       {[&](const cv::Mat3b& bgr) { return masker.Mask(bgr, robot.TruePose()); },
-                        masker.SettlingFrames()},
-                       watching);
+  ExplorationResult result = ExploreWithRobot(
+      robot, RobotDescription{camera, world.robot().radius}, explore_options,
+      {[&](const cv::Mat3b& bgr) { return masker.Mask(bgr, robot.TruePose()); },
+       masker.SettlingFrames(), [&]() -> const cv::Mat1b& { return masker.Unresolved(); }},
+      watching);
   result.final_true_pose = robot.TruePose();
   result.pose_error = eval::PoseErrorOf(result.final_frame_poses, truth);
   if (result.pose_error && result.final_pose) {

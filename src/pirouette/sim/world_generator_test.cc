@@ -12,6 +12,7 @@
 #include "pirouette/sim/obstacle_placer.h"
 #include "pirouette/sim/room_plan.h"
 #include "pirouette/sim/seeded_random.h"
+#include "pirouette/sim/world_style.h"
 
 // Its own namespace: the unit tests compile together (unity batches).
 namespace pirouette::sim::world_generator_test {
@@ -134,6 +135,74 @@ TEST(WorldGeneratorTest, LooksVaryAndTheHardOnesComeUp) {
   }
   for (const std::string& words : kWords) EXPECT_TRUE(seen.contains(words)) << words;
   EXPECT_EQ(shapes.size(), 4u) << "boxes, cylinders, walls and prisms";
+}
+
+// How unlike the lit floor a face of `colour` looks at its least, found the
+// slow way: a face every tenth of a degree round, and a top.
+double LeastContrastTheSlowWay(const Light& light, const core::Rgb& colour,
+                               const core::Rgb& floor) {
+  // The renderer's flat shading: ambient + Lambert towards the light.
+  const auto shade = [&](const Eigen::Vector3d& normal) {
+    return light.ambient +
+           light.intensity * std::max(0.0, -normal.dot(light.direction.normalized()));
+  };
+  const double up = shade(Eigen::Vector3d::UnitZ());
+  const auto channel = [&](int c, const core::Rgb& rgb) {
+    return c == 0 ? rgb.r : c == 1 ? rgb.g : rgb.b;
+  };
+  const auto contrast = [&](double shade) {
+    double most = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      most = std::max(most, std::abs(std::min(255.0, channel(c, colour) * shade) -
+                                     std::min(255.0, channel(c, floor) * up)));
+    }
+    return most;
+  };
+  double least = contrast(up);
+  for (int i = 0; i < 3600; ++i) {
+    const double a = i * std::numbers::pi / 1800.0;
+    least = std::min(least, contrast(shade({std::cos(a), std::sin(a), 0.0})));
+  }
+  return least;
+}
+
+TEST(WorldStyleTest, PictureContrastIsTheLeastOverTheFacesOfTheShadedColour) {
+  // Light straight down: every vertical face gets the ambient alone.
+  const Light overhead{0.5, {0.0, 0.0, -1.0}, 0.5};
+  const core::Rgb floor{100, 100, 100};  // lit: 100
+  // A wall twice as light shades to the floor's grey on its faces...
+  EXPECT_NEAR(PictureContrast(overhead, {200, 200, 200}, floor), 0.0, 1e-9);
+  // ...a dark one is unlike it on every face and on its top (30 against 100).
+  EXPECT_NEAR(PictureContrast(overhead, {30, 30, 30}, floor), 70.0, 1e-9);
+  // The largest channel's difference counts: a red only in red.
+  EXPECT_NEAR(PictureContrast(overhead, {100, 200, 200}, {100, 100, 100}), 50.0, 1e-9);
+  // A slanting light lights some faces more than others: the least over all.
+  const Light slanting{0.4, {0.6, 0.3, -1.0}, 0.6};
+  for (const core::Rgb colour : {core::Rgb{40, 200, 90}, core::Rgb{180, 170, 160}}) {
+    EXPECT_NEAR(PictureContrast(slanting, colour, {150, 140, 130}),
+                LeastContrastTheSlowWay(slanting, colour, {150, 140, 130}), 0.5);
+  }
+}
+
+TEST(WorldGeneratorTest, EveryWallAndObstacleStandsOutFromTheFloorInThePicture) {
+  // The hard cases (floors close to the walls' colour or to what they shade
+  // to, obstacles close to the floor's) come up, but never closer to the
+  // floor than the camera's noise lets it tell them apart.
+  for (const WorldKind kind : kWorldKinds) {
+    for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+      const WorldSpec spec = GenerateWorld(kind, seed);
+      const auto check = [&](const core::Rgb& colour, const std::string& what) {
+        EXPECT_GE(LeastContrastTheSlowWay(spec.light, colour, spec.floor.colour),
+                  kMinPictureContrast - 0.5)
+            << WorldKindName(kind) << " " << seed << ": " << what;
+      };
+      ASSERT_TRUE(spec.walls.has_value());
+      check(spec.walls->colour, "the walls");
+      for (std::size_t i = 0; i < spec.obstacles.size(); ++i) {
+        check(spec.obstacles[i].colour, "obstacle " + std::to_string(i));
+      }
+    }
+  }
 }
 
 TEST(MazePlanTest, CorridorsFillTheFloorWithinTheirRange) {

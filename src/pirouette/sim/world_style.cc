@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -52,6 +53,11 @@ constexpr double kObstacleNearWall = 0.10;
 
 // Obstacles exactly as high as the camera, some of the time.
 constexpr double kObstacleAsHighAsTheCamera = 0.1;
+
+// Draws of a colour of one kind before the kind itself is drawn again, and
+// of kinds before the generator gives up (it has never come near either).
+constexpr int kColourTries = 20;
+constexpr int kKindTries = 50;
 
 // `value` to `decimals` places, as the double nearest that decimal (so that
 // it prints short: 0.11, not 0.11000000000000001).
@@ -156,9 +162,10 @@ Light DrawLight(SeededRandom& random) {
   return light;
 }
 
-// The floor's colour; `walls` and `light` for the floors drawn to look like the walls.
-Drawn DrawFloorColour(SeededRandom& random, const core::Rgb& walls, const Light& light) {
-  const double pick = random.Unit();
+// A floor colour of the kind `pick` (in [0, 1): the shares above) names;
+// `walls` and `light` for the floors drawn to look like the walls.
+Drawn DrawFloorColourOfKind(SeededRandom& random, double pick, const core::Rgb& walls,
+                            const Light& light) {
   if (pick < kFloorDark) return {Tinted(random, random.Uniform(12.0, 60.0), 6.0), "dark"};
   double below = kFloorDark + kFloorWood;
   if (pick < below) {
@@ -185,7 +192,69 @@ Drawn DrawFloorColour(SeededRandom& random, const core::Rgb& walls, const Light&
   return {Near(random, shaded, 4.0, 8.0), "close to the colour the walls shade to"};
 }
 
+// An obstacle colour of the kind `pick` (in [0, 1): the shares above) names.
+core::Rgb DrawObstacleColourOfKind(SeededRandom& random, double pick, const WorldStyle& style) {
+  if (pick < kObstacleSaturated) {
+    return DrawHsv(random, 0.5, 0.95, 0.35, 0.95);
+  }
+  if (pick < kObstacleSaturated + kObstacleNearFloor) {
+    // Not the floor's own colour: 15..35 away, one way or the other.
+    const double magnitude = random.Uniform(15.0, 35.0);
+    const double shift = random.Chance(0.5) ? magnitude : -magnitude;
+    const core::Rgb f = style.floor.colour;
+    return FromDoubles(f.r + shift, f.g + shift, f.b + shift);
+  }
+  if (pick < kObstacleSaturated + kObstacleNearFloor + kObstacleNearWall) {
+    return Near(random, style.walls.colour, 10.0, 4.0);
+  }
+  return Tinted(random, random.Uniform(20.0, 240.0), 4.0);
+}
+
+// The floor's colour: as close to the walls' as the hard kinds draw it, but
+// never closer in the picture than kMinPictureContrast (each kind is drawn
+// again a few times before the kind is).
+Drawn DrawFloorColour(SeededRandom& random, const core::Rgb& walls, const core::Rgb& inner_walls,
+                      const Light& light) {
+  for (int kind = 0; kind < kKindTries; ++kind) {
+    const double pick = random.Unit();
+    for (int i = 0; i < kColourTries; ++i) {
+      Drawn floor = DrawFloorColourOfKind(random, pick, walls, light);
+      if (PictureContrast(light, walls, floor.colour) >= kMinPictureContrast &&
+          PictureContrast(light, inner_walls, floor.colour) >= kMinPictureContrast) {
+        return floor;
+      }
+    }
+  }
+  throw std::runtime_error(
+      "world generator: found no floor colour that the camera tells from the walls");
+}
+
 }  // namespace
+
+double PictureContrast(const Light& light, const core::Rgb& colour, const core::Rgb& floor) {
+  // A vertical face facing the light's way gets the most light, one facing
+  // away the ambient alone, and every shade between faces some way round:
+  // sampled finely enough (a step of at most 1/kShadeSteps of the light's
+  // range) to come within half a grey level of the least.
+  constexpr int kShadeSteps = 512;
+  const Eigen::Vector3d& d = light.direction;
+  const double horizontal = std::hypot(d.x(), d.y()) / d.norm();
+  const double up = Shade(light, Eigen::Vector3d::UnitZ());
+  const auto lit = [](std::uint8_t channel, double shade) {
+    return std::min(255.0, static_cast<double>(channel) * shade);
+  };
+  const auto contrast = [&](double shade) {
+    return std::max({std::abs(lit(colour.r, shade) - lit(floor.r, up)),
+                     std::abs(lit(colour.g, shade) - lit(floor.g, up)),
+                     std::abs(lit(colour.b, shade) - lit(floor.b, up))});
+  };
+  double least = contrast(up);  // a top
+  for (int i = 0; i <= kShadeSteps; ++i) {
+    const double towards = horizontal * static_cast<double>(i) / kShadeSteps;
+    least = std::min(least, contrast(light.ambient + light.intensity * towards));
+  }
+  return least;
+}
 
 double Shade(const Light& light, const Eigen::Vector3d& normal) {
   const Eigen::Vector3d& d = light.direction;
@@ -209,7 +278,7 @@ WorldStyle DrawStyle(SeededRandom& random, const StyleScale& scale) {
     inner = fmt::format("; inner walls {} {}", other.words, ColourText(other.colour));
   }
   style.light = DrawLight(random);
-  const Drawn floor = DrawFloorColour(random, walls.colour, style.light);
+  const Drawn floor = DrawFloorColour(random, walls.colour, style.inner_wall_colour, style.light);
   style.floor.colour = floor.colour;
   style.floor.texture =
       random.Chance(kNoTexture) ? 0.0 : RoundTo(random.Uniform(kTextureMin, kTextureMax), 2);
@@ -220,21 +289,17 @@ WorldStyle DrawStyle(SeededRandom& random, const StyleScale& scale) {
 }
 
 core::Rgb DrawObstacleColour(SeededRandom& random, const WorldStyle& style) {
-  const double pick = random.Unit();
-  if (pick < kObstacleSaturated) {
-    return DrawHsv(random, 0.5, 0.95, 0.35, 0.95);
+  for (int kind = 0; kind < kKindTries; ++kind) {
+    const double pick = random.Unit();
+    for (int i = 0; i < kColourTries; ++i) {
+      const core::Rgb colour = DrawObstacleColourOfKind(random, pick, style);
+      if (PictureContrast(style.light, colour, style.floor.colour) >= kMinPictureContrast) {
+        return colour;
+      }
+    }
   }
-  if (pick < kObstacleSaturated + kObstacleNearFloor) {
-    // Not the floor's own colour: 15..35 away, one way or the other.
-    const double magnitude = random.Uniform(15.0, 35.0);
-    const double shift = random.Chance(0.5) ? magnitude : -magnitude;
-    const core::Rgb f = style.floor.colour;
-    return FromDoubles(f.r + shift, f.g + shift, f.b + shift);
-  }
-  if (pick < kObstacleSaturated + kObstacleNearFloor + kObstacleNearWall) {
-    return Near(random, style.walls.colour, 10.0, 4.0);
-  }
-  return Tinted(random, random.Uniform(20.0, 240.0), 4.0);
+  throw std::runtime_error(
+      "world generator: found no obstacle colour that the camera tells from the floor");
 }
 
 double DrawObstacleHeight(SeededRandom& random, const StyleScale& scale) {

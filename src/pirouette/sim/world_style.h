@@ -36,10 +36,15 @@ struct WorldStyle {
   std::string description;
 };
 
+// The floor is never nearer the walls in the picture than
+// kMinPictureContrast. Throws std::runtime_error if no draw is (it has never
+// come near).
 WorldStyle DrawStyle(SeededRandom& random, const StyleScale& scale);
 
 // An obstacle's colour: mostly saturated, sometimes close to the floor's or
-// the walls' colour, sometimes grey.
+// the walls' colour, sometimes grey; never nearer the floor in the picture
+// than kMinPictureContrast. Throws std::runtime_error if no draw is (it has
+// never come near).
 core::Rgb DrawObstacleColour(SeededRandom& random, const WorldStyle& style);
 
 // An obstacle's height, to the millimetre: sometimes exactly the camera's.
@@ -48,5 +53,23 @@ double DrawObstacleHeight(SeededRandom& random, const StyleScale& scale);
 // The brightness the renderer gives a surface of unit normal `normal` (its
 // flat shading: ambient + intensity · the cosine towards the light).
 double Shade(const Light& light, const Eigen::Vector3d& normal);
+
+// The least difference a generated world keeps, in grey levels of the
+// picture, between the lit floor and every face of its walls and obstacles
+// (PictureContrast): four times the simulated camera's noise
+// (RenderOptions::noise_sigma, 2 levels). Nearer than that a face is lost in
+// the camera's noise, and no camera that finds the floor by its look could
+// tell it from the floor: such a world would test the camera, not the map.
+// The hard cases (a floor close to the walls' colour, or to the colour they
+// shade to) are drawn as close as this, not closer.
+inline constexpr double kMinPictureContrast = 8.0;
+
+// How unlike the floor a surface of `colour` looks to the camera under
+// `light`: over its faces (vertical ones facing any way, and a top, as a
+// thing lower than the camera shows it), the least of the largest channel's
+// difference between the face's shaded colour and the floor's (lit from
+// above), in grey levels, each clamped to 255 as the renderer does; within
+// half a grey level.
+double PictureContrast(const Light& light, const core::Rgb& colour, const core::Rgb& floor);
 
 }  // namespace pirouette::sim

@@ -45,7 +45,8 @@ RopResult MakeRop(const RopRequest& request) {
   for (const sim::SimulatedFrame& frame : frames) {
     const cv::Mat3b bgr = io::ToBgrMat(frame.frame.image);
     const cv::Mat1b mask = masker.Mask(bgr, frame.world_T_robot);
-    views.push_back({frame.frame.odometry.heading(), vision::ExtractProfile(mask, ipm, max_range)});
+    views.push_back({frame.frame.odometry.heading(),
+                     vision::ExtractProfile(mask, ipm, max_range, masker.Unresolved())});
   }
   RopResult result;
   result.rop = mapping::MergePirouette(views);

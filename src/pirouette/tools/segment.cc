@@ -39,7 +39,8 @@ SegmentImageResult SegmentImage(const SegmentImageRequest& request) {
     const camera::InversePerspectiveMap ipm(*camera);
     const double max_range =
         request.max_range_m.value_or(camera::MaxRange(*camera, mapping::kSmallRobotCellM));
-    result.profile = vision::ExtractProfile(result.floor_mask, ipm, max_range);
+    result.profile =
+        vision::ExtractProfile(result.floor_mask, ipm, max_range, segmenter->Unresolved());
   }
   if (!request.mask_path.empty()) io::WritePng(request.mask_path, result.floor_mask);
   if (!request.overlay_path.empty()) {

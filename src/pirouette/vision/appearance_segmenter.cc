@@ -65,6 +65,13 @@ void AppearanceSegmenter::MakeGrid(cv::Size frame,
   }
   grid.texture.emplace(grid.scale, options_.texture_window, blur_order_, full_corrector);
   grid.reference = ReferenceRegionMask(grid.cells, options_.reference);
+  grid.reference_top = grid.cells.height;
+  for (int v = 0; v < grid.cells.height; ++v) {
+    if (cv::countNonZero(grid.reference.row(v)) > 0) {
+      grid.reference_top = v;
+      break;
+    }
+  }
   grid.seeds = grid.reference.clone();
   grid.everywhere = cv::Mat1b(grid.cells, std::uint8_t{255});
   if (options_.bottom_rows > 0) {
@@ -258,8 +265,43 @@ cv::Mat1b AppearanceSegmenter::Segment(const cv::Mat3b& bgr_raw) {
     colour_.Learn(FloorColourModel::Histogram(bins_, learn_region_));
     LearnTexture(texture, learn_region_);
   }
+  FindUnresolved(texture, bgr_raw.size());
   if (scale == 1) return floor_.clone();
   return UpsampleFloorMask(floor_, corrected, bgr_raw, scale, corrector_);
+}
+
+void AppearanceSegmenter::FindUnresolved(const cv::Mat1b& texture, cv::Size frame) {
+  // The smoothest texture the floor's model takes.
+  int smoothest = kTextureBins;
+  for (int i = kTextureBins - 1; i >= 0; --i) {
+    if (texture_likelihood_[i] >= options_.texture_threshold) smoothest = i;
+  }
+  const cv::Mat1b& barrier = options_.use_edges ? grid_.edges->barrier() : no_barrier_;
+  unresolved_cells_.create(grid_.cells);
+  unresolved_cells_.setTo(0);
+  bool any = false;
+  for (int v = 0; v < grid_.reference_top; ++v) {
+    const std::uint16_t* b = bins_[v];
+    const std::uint8_t* t = texture[v];
+    const std::uint8_t* f = floor_[v];
+    const std::uint8_t* bar = barrier[v];
+    std::uint8_t* out = unresolved_cells_[v];
+    for (int u = 0; u < grid_.cells.width; ++u) {
+      if (f[u] == 0 && pass_[b[u]] != 0 && bar[u] == 0 && t[u] < smoothest) {
+        out[u] = 255;
+        any = true;
+      }
+    }
+  }
+  if (!any) {
+    unresolved_.release();
+    return;
+  }
+  // Grown by a cell: the floor's boundary is placed to the pixel within the
+  // cells (UpsampleFloorMask), so the first pixel past it may lie in the
+  // floor cell below an unresolved one.
+  cv::dilate(unresolved_cells_, unresolved_cells_, cv::Mat());
+  cv::resize(unresolved_cells_, unresolved_, frame, 0.0, 0.0, cv::INTER_NEAREST);
 }
 
 void AppearanceSegmenter::StrongSeeds(const cv::Mat1b& texture) {

@@ -111,6 +111,17 @@ struct AppearanceSegmenterOptions {
 // reference region is floor (a frame of one appearance all over does not vote); run::FrameMapper
 // maps the first pirouette's frames again once the vote is in (SettlingFrames).
 //
+// A floor's grain fades with range: once it is finer than a pixel, the far
+// floor looks smoother than the reference region's (measured on rendered
+// floors: the feature falls by about three bins each time the range doubles
+// past about twice the region's, docs/worlds.md), and the texture test would
+// end the floor in open floor, a ring of false walls. So above the reference
+// region, the rows the texture was not learnt from, a cell of the floor's
+// colour, off the edges, whose texture is smoother than any the model holds
+// is unresolved (Unresolved), not an obstacle: a smooth thing of the floor's
+// colour there and a faded floor look alike, and only a nearer look tells
+// them apart. A texture rougher than the floor's still ends the floor.
+//
 // Speed: all the steps above run on the working grid (options.working_width:
 // 160×120 cells for 320×240 and 640×480 frames), with the texture measured at
 // full resolution and the boundary placed to the pixel (UpsampleFloorMask);
@@ -128,6 +139,9 @@ class AppearanceSegmenter : public FloorSegmenter {
   // The first pirouette, over which the model follows the majority of the
   // reference regions (options.bootstrap_frames).
   int SettlingFrames() const override { return options_.bootstrap_frames; }
+  // The floor-coloured cells above the reference region whose texture is
+  // smoother than any the floor's model holds (see Segment).
+  const cv::Mat1b& Unresolved() const override { return unresolved_; }
 
   const FloorColourModel& colour_model() const { return colour_; }
 
@@ -142,9 +156,10 @@ class AppearanceSegmenter : public FloorSegmenter {
     cv::Size cells;
     std::optional<EdgeDetector> edges;
     std::optional<TextureFeature> texture;
-    cv::Mat1b reference;   // the reference region's mask, on the grid
-    cv::Mat1b seeds;       // where floor components may start: reference or bottom rows
-    cv::Mat1b everywhere;  // all 255
+    cv::Mat1b reference;    // the reference region's mask, on the grid
+    int reference_top = 0;  // the reference region's highest row
+    cv::Mat1b seeds;        // where floor components may start: reference or bottom rows
+    cv::Mat1b everywhere;   // all 255
   };
   void MakeGrid(cv::Size frame, const std::optional<camera::CameraModel>& camera);
 
@@ -167,6 +182,8 @@ class AppearanceSegmenter : public FloorSegmenter {
   // strong_seeds_: the seed cells whose colour and texture are typical of the
   // floor (options.seed_colour_likelihood, seed_texture_likelihood).
   void StrongSeeds(const cv::Mat1b& texture);
+  // unresolved_ (at the frame's size, from the grid's cells): see Segment.
+  void FindUnresolved(const cv::Mat1b& texture, cv::Size frame);
 
   // One reference region's appearance, kept while bootstrapping.
   struct ReferenceSample {
@@ -205,6 +222,8 @@ class AppearanceSegmenter : public FloorSegmenter {
   cv::Mat1b floor_;
   cv::Mat1b learn_region_;
   cv::Mat1b strong_seeds_;
+  cv::Mat1b unresolved_cells_;      // on the grid, grown by a cell
+  cv::Mat1b unresolved_;            // at the frame's size
   std::vector<std::uint8_t> pass_;  // per colour bin: passes the colour test
   std::optional<MaskCloser> closer_;
   MaskGrower grower_;

@@ -29,6 +29,18 @@ class FloorSegmenter {
   // first pirouette: their masks are to be made again once it has seen them
   // all (run::FrameMapper does).
   virtual int SettlingFrames() const { return 0; }
+
+  // Where the last frame Segment was given may show more floor that the
+  // segmenter could not resolve: 255 at pixels that are not floor in its
+  // mask but whose floor cannot be ruled out (see AppearanceSegmenter), 0
+  // elsewhere; the frame's size, or empty when there are none (always, for a
+  // segmenter that does not say). ProfileExtractor reads a column whose floor
+  // ends at such a pixel as seen free to there, not as an obstacle's base.
+  // Valid until the next Segment.
+  virtual const cv::Mat1b& Unresolved() const { return no_unresolved_; }
+
+ private:
+  cv::Mat1b no_unresolved_;
 };
 
 enum class SegmentationMethod {

@@ -14,8 +14,19 @@ core::RangeReading Reading(const Eigen::Vector2f& p_robot, double range_m, core:
 
 double Range(const Eigen::Vector2f& p_robot) { return static_cast<double>(p_robot.norm()); }
 
-core::RangeReading ColumnReading(const cv::Mat1b& mask, const camera::InversePerspectiveMap& ipm,
-                                 int u, double max_range_m) {
+// The reading of a floor edge at `edge` (robot frame) found at pixel (u, v):
+// a hit within range, or kClear at its range where the pixel is unresolved.
+core::RangeReading EdgeReading(const Eigen::Vector2f& edge, const cv::Mat1b& unresolved, int u,
+                               int v, double max_range_m) {
+  const double range = Range(edge);
+  if (range > max_range_m) return Reading(edge, max_range_m, core::ReadingKind::kClear);
+  const bool seen_to_here = !unresolved.empty() && unresolved(v, u) != 0;
+  return Reading(edge, range, seen_to_here ? core::ReadingKind::kClear : core::ReadingKind::kHit);
+}
+
+core::RangeReading ColumnReading(const cv::Mat1b& mask, const cv::Mat1b& unresolved,
+                                 const camera::InversePerspectiveMap& ipm, int u,
+                                 double max_range_m) {
   const int bottom = ipm.height() - 1;
   const Eigen::Vector2f bottom_point = ipm.At(u, bottom).value_or(Eigen::Vector2f::UnitX());
   int start = -1;
@@ -36,9 +47,7 @@ core::RangeReading ColumnReading(const cv::Mat1b& mask, const camera::InversePer
     const std::optional<Eigen::Vector2f> here = ipm.At(u, v);
     if (mask(v, u) == 0) {
       const Eigen::Vector2f edge = here ? Eigen::Vector2f(0.5f * (*here + *below)) : *below;
-      const double range = Range(edge);
-      return range <= max_range_m ? Reading(edge, range, core::ReadingKind::kHit)
-                                  : Reading(edge, max_range_m, core::ReadingKind::kClear);
+      return EdgeReading(edge, unresolved, u, v, max_range_m);
     }
     if (!here) return Reading(*below, max_range_m, core::ReadingKind::kClear);
     if (Range(*here) > max_range_m) return Reading(*here, max_range_m, core::ReadingKind::kClear);
@@ -50,13 +59,15 @@ core::RangeReading ColumnReading(const cv::Mat1b& mask, const camera::InversePer
 }  // namespace
 
 core::ObstacleProfile ExtractProfile(const cv::Mat1b& floor_mask,
-                                     const camera::InversePerspectiveMap& ipm, double max_range_m) {
+                                     const camera::InversePerspectiveMap& ipm, double max_range_m,
+                                     const cv::Mat1b& unresolved) {
   assert(floor_mask.cols == ipm.width() && floor_mask.rows == ipm.height());
+  assert(unresolved.empty() || unresolved.size() == floor_mask.size());
   core::ObstacleProfile profile;
   profile.max_range_m = max_range_m;
   profile.readings.reserve(static_cast<std::size_t>(ipm.width()));
   for (int u = 0; u < ipm.width(); ++u) {
-    profile.readings.push_back(ColumnReading(floor_mask, ipm, u, max_range_m));
+    profile.readings.push_back(ColumnReading(floor_mask, unresolved, ipm, u, max_range_m));
   }
   return profile;
 }
@@ -89,8 +100,10 @@ ProfileExtractor::ProfileExtractor(const camera::InversePerspectiveMap& ipm, dou
   }
 }
 
-core::ObstacleProfile ProfileExtractor::Extract(const cv::Mat1b& floor_mask) const {
+core::ObstacleProfile ProfileExtractor::Extract(const cv::Mat1b& floor_mask,
+                                                const cv::Mat1b& unresolved) const {
   CV_Assert(floor_mask.cols == ipm_.width() && floor_mask.rows == ipm_.height());
+  CV_Assert(unresolved.empty() || unresolved.size() == floor_mask.size());
   const int width = ipm_.width();
   const int height = ipm_.height();
   const int bottom = height - 1;
@@ -115,12 +128,12 @@ core::ObstacleProfile ProfileExtractor::Extract(const cv::Mat1b& floor_mask) con
       }
     }
     if (start[u] < 0) {
-      profile.readings[u] = ColumnReading(floor_mask, u, -1, -1, -1);
+      profile.readings[u] = ColumnReading(floor_mask, unresolved, u, -1, -1, -1);
       continue;
     }
     fail[u] = first_fail_[u][k];
     if (fail[u] == -2) {
-      profile.readings[u] = ColumnReading(floor_mask, u, start[u], -2, -1);
+      profile.readings[u] = ColumnReading(floor_mask, unresolved, u, start[u], -2, -1);
       start[u] = -1;  // done
     } else if (fail[u] >= 0) {
       stop_next[u] = stop_head[fail[u]];
@@ -161,7 +174,7 @@ core::ObstacleProfile ProfileExtractor::Extract(const cv::Mat1b& floor_mask) con
   }
   for (int u = 0; u < width; ++u) {
     if (start[u] < 0) continue;
-    profile.readings[u] = ColumnReading(floor_mask, u, start[u], fail[u], end[u]);
+    profile.readings[u] = ColumnReading(floor_mask, unresolved, u, start[u], fail[u], end[u]);
   }
   return profile;
 }
@@ -170,7 +183,8 @@ core::ObstacleProfile ProfileExtractor::Extract(const cv::Mat1b& floor_mask) con
 // up column u stopped: `end`, the first non-floor row above `start` or the
 // first row there whose floor point is missing or beyond range (`fail`), -1
 // if neither. start -1: a blind column; fail -2: the start row itself fails.
-core::RangeReading ProfileExtractor::ColumnReading(const cv::Mat1b& mask, int u, int start,
+core::RangeReading ProfileExtractor::ColumnReading(const cv::Mat1b& mask,
+                                                   const cv::Mat1b& unresolved, int u, int start,
                                                    int fail, int end) const {
   const int bottom = ipm_.height() - 1;
   const Eigen::Vector2f bottom_point = ipm_.At(u, bottom).value_or(Eigen::Vector2f::UnitX());
@@ -188,9 +202,7 @@ core::RangeReading ProfileExtractor::ColumnReading(const cv::Mat1b& mask, int u,
   const std::optional<Eigen::Vector2f> here = ipm_.At(u, end);
   if (mask(end, u) == 0) {
     const Eigen::Vector2f edge = here ? Eigen::Vector2f(0.5f * (*here + below)) : below;
-    const double range = Range(edge);
-    return range <= max_range_m_ ? Reading(edge, range, core::ReadingKind::kHit)
-                                 : Reading(edge, max_range_m_, core::ReadingKind::kClear);
+    return EdgeReading(edge, unresolved, u, end, max_range_m_);
   }
   // end == fail: a floor pixel with no floor point, or beyond range.
   if (!here) return Reading(below, max_range_m_, core::ReadingKind::kClear);

@@ -30,9 +30,14 @@ inline constexpr int kBlindSearchRows = 3;
 //          max_range_m, bearing of the first floor point beyond max_range_m;
 //   kBlind when the bottom kBlindSearchRows rows hold no floor: range and
 //          bearing of the bottom pixel's floor point.
+// Where `unresolved` (empty, or the mask's size: FloorSegmenter::Unresolved)
+// marks the pixel that ends the floor, the floor may go on there unresolved:
+// the reading is kClear at the edge's range (less than max_range_m), seen
+// free to there and not beyond, instead of kHit.
 // Pure: the same mask gives the same profile.
 core::ObstacleProfile ExtractProfile(const cv::Mat1b& floor_mask,
-                                     const camera::InversePerspectiveMap& ipm, double max_range_m);
+                                     const camera::InversePerspectiveMap& ipm, double max_range_m,
+                                     const cv::Mat1b& unresolved = cv::Mat1b());
 
 // ExtractProfile for a stream of masks of one camera: the same profiles, with
 // what depends on the camera and the range alone found once. For each column
@@ -46,12 +51,13 @@ class ProfileExtractor {
   ProfileExtractor(const camera::InversePerspectiveMap& ipm, double max_range_m);
 
   double max_range_m() const { return max_range_m_; }
-  // ExtractProfile(floor_mask, ipm, max_range_m).
-  core::ObstacleProfile Extract(const cv::Mat1b& floor_mask) const;
+  // ExtractProfile(floor_mask, ipm, max_range_m, unresolved).
+  core::ObstacleProfile Extract(const cv::Mat1b& floor_mask,
+                                const cv::Mat1b& unresolved = cv::Mat1b()) const;
 
  private:
-  core::RangeReading ColumnReading(const cv::Mat1b& mask, int u, int start, int fail,
-                                   int end) const;
+  core::RangeReading ColumnReading(const cv::Mat1b& mask, const cv::Mat1b& unresolved, int u,
+                                   int start, int fail, int end) const;
 
   camera::InversePerspectiveMap ipm_;
   double max_range_m_;

@@ -124,8 +124,46 @@ TEST(ProfileExtractorTest, TheExtractorGivesExtractProfilesReadings) {
         mask(rng.uniform(0, 240), rng.uniform(0, 320)) = 0;
       }
       ExpectSameProfiles(extractor.Extract(mask), ExtractProfile(mask, ipm, max_range));
+      // With unresolved pixels here and there, too.
+      cv::Mat1b unresolved(240, 320, uchar{0});
+      for (int u = 0; u < 320; ++u) {
+        if (rng.uniform(0, 2) == 0) unresolved.col(u).setTo(255);
+      }
+      ExpectSameProfiles(extractor.Extract(mask, unresolved),
+                         ExtractProfile(mask, ipm, max_range, unresolved));
     }
   }
+}
+
+// Where the floor ends at an unresolved pixel (the floor may go on there,
+// FloorSegmenter::Unresolved), the column is seen free to the edge and no
+// farther: kClear at the edge's range, not a hit.
+TEST(ProfileExtractorTest, AFloorEndingWhereItIsUnresolvedIsClearToThere) {
+  const camera::CameraModel camera = PaperCamera();
+  const camera::InversePerspectiveMap ipm(camera);
+  cv::Mat1b mask(240, 320, uchar{0});
+  mask.rowRange(151, 240).setTo(255);  // the edge at 150.5, as in the first test
+  cv::Mat1b unresolved(240, 320, uchar{0});
+  unresolved(cv::Rect(0, 100, 160, 51)).setTo(255);  // the left half, rows 100-150
+  const ProfileExtractor extractor(ipm, 10.0);
+  const core::ObstacleProfile plain = extractor.Extract(mask);
+  const core::ObstacleProfile profile = extractor.Extract(mask, unresolved);
+  for (int u = 0; u < 320; ++u) {
+    const auto i = static_cast<std::size_t>(u);
+    EXPECT_EQ(plain.readings[i].kind, core::ReadingKind::kHit) << u;
+    EXPECT_EQ(profile.readings[i].kind,
+              u < 160 ? core::ReadingKind::kClear : core::ReadingKind::kHit)
+        << u;
+    // The same range and bearing either way: the edge's.
+    EXPECT_EQ(profile.readings[i].range_m, plain.readings[i].range_m) << u;
+    EXPECT_EQ(profile.readings[i].bearing_rad, plain.readings[i].bearing_rad) << u;
+    EXPECT_LT(profile.readings[i].range_m, 10.0) << u;
+  }
+  // Unresolved pixels where the floor does not end change nothing.
+  cv::Mat1b elsewhere(240, 320, uchar{0});
+  elsewhere.rowRange(0, 140).setTo(255);
+  elsewhere.rowRange(152, 240).setTo(255);
+  ExpectSameProfiles(extractor.Extract(mask, elsewhere), plain);
 }
 
 }  // namespace

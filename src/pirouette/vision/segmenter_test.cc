@@ -267,6 +267,53 @@ TEST(AppearanceSegmenterTest, AViewFilledByAWallThatPassesForTheFloorHasNoFloor)
   }
 }
 
+// A floor whose grain fades far off, as a fine grain does once it is finer
+// than a pixel: rows [70, 120) the floor with its grain; rows [40, 70) the
+// same colour, smooth on the left half and rougher than the floor on the
+// right; a light wall above.
+cv::Mat3b FloorFadingFarOff() {
+  cv::Mat3b image(120, 160, cv::Vec3b(90, 95, 100));
+  cv::Mat3s shifted;
+  image.convertTo(shifted, CV_16SC3);
+  cv::RNG rng(17);
+  const auto add_grain = [&](cv::Rect where, double grain) {
+    cv::Mat noise(where.size(), CV_16SC3);
+    rng.fill(noise, cv::RNG::NORMAL, 0, grain);
+    cv::Mat3s part = shifted(where);
+    part += noise;
+  };
+  add_grain(cv::Rect(0, 70, 160, 50), kGrain);
+  add_grain(cv::Rect(0, 40, 80, 30), 1.0);
+  add_grain(cv::Rect(80, 40, 80, 30), 4.0 * kGrain);
+  shifted.convertTo(image, CV_8UC3);
+  image(cv::Rect(0, 0, 160, 40)).setTo(cv::Vec3b(220, 225, 230));
+  return image;
+}
+
+TEST(AppearanceSegmenterTest, AFloorSmootherFarOffIsUnresolvedNotAnEnd) {
+  AppearanceSegmenter segmenter(std::nullopt, AppearanceSegmenterOptions{});
+  EXPECT_TRUE(segmenter.Unresolved().empty()) << "before any frame";
+  cv::Mat1b mask;
+  for (int frame = 0; frame < 13; ++frame) mask = segmenter.Segment(FloorFadingFarOff());
+  const cv::Mat1b& unresolved = segmenter.Unresolved();
+  ASSERT_EQ(unresolved.size(), mask.size());
+  for (int u = 4; u < 160; u += 4) {
+    if (std::abs(u - 80) < 20) continue;  // where the halves meet (the floor closes over it)
+    // The texture test ends the floor where its grain changes...
+    const int end = BoundaryRow(mask, u);
+    EXPECT_GE(end, 40) << "column " << u;
+    EXPECT_LE(end, 70) << "column " << u;
+    // ...but smoother than the floor, far off, is what a faded grain looks
+    // like: the floor may go on there. Rougher is not.
+    EXPECT_EQ(unresolved(end, u), u < 80 ? 255 : 0) << "column " << u;
+    // The wall is not the floor's colour: never unresolved.
+    EXPECT_EQ(unresolved(20, u), 0) << "column " << u;
+  }
+  // A frame with no such floor leaves nothing unresolved.
+  segmenter.Segment(FloorWithBox(kGrain));
+  EXPECT_TRUE(segmenter.Unresolved().empty());
+}
+
 TEST(AppearanceSegmenterTest, AViewOfOneAppearanceAllOverDoesNotVote) {
   // A pirouette started between walls: more of its views are filled by one
   // wall than show the floor, but those say nothing of which is the floor.
