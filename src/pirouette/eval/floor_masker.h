@@ -29,14 +29,13 @@ class FloorMasker {
   // Where the last mask's floor may go on unresolved
   // (vision::FloorSegmenter::Unresolved); empty for the truth.
   const cv::Mat1b& Unresolved() const {
-    return segmenter_ ? segmenter_->Unresolved() : no_unresolved_;
+    return segmenter_ ? segmenter_->Unresolved() : vision::NothingUnresolved();
   }
 
  private:
   vision::MaskSource source_;
   std::unique_ptr<vision::FloorSegmenter> segmenter_;  // unless kTruth
   std::optional<sim::RayCaster> caster_;               // for kTruth
-  cv::Mat1b no_unresolved_;
 };
 
 }  // namespace pirouette::eval

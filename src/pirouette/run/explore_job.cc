@@ -269,11 +269,7 @@ ExplorationResult ExploreRemote(robot::Robot& connected, const ExploreRequest& r
       request.options.method == vision::MaskSource::kPaper ? vision::SegmentationMethod::kPaper
                                                            : vision::SegmentationMethod::kDefault,
       robot_info.camera);
-  return ExploreWithRobot(
-      robot, robot_info, options,
-      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames(),
-       [&]() -> const cv::Mat1b& { return segmenter->Unresolved(); }},
-      observer);
+  return ExploreWithRobot(robot, robot_info, options, MasksOf(*segmenter), observer);
 }
 
 // The request's own checks (the options are checked with their noise).

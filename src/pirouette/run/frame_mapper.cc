@@ -73,6 +73,12 @@ FrameMapper::FrameMapper(const MapperSetup& setup, FrameMasks masks, const core:
   }
 }
 
+FrameMasks MasksOf(vision::FloorSegmenter& segmenter) {
+  return {[&segmenter](const cv::Mat3b& bgr) { return segmenter.Segment(bgr); },
+          segmenter.SettlingFrames(),
+          [&segmenter]() -> const cv::Mat1b& { return segmenter.Unresolved(); }};
+}
+
 double MaxMapSide(const MapperSetup& setup) {
   return setup.max_map_m > 0.0 ? setup.max_map_m : kDefaultMaxMapCells * setup.cell_m;
 }

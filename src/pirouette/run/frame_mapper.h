@@ -16,6 +16,7 @@
 #include "pirouette/localize/pose_tracker.h"
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/robot/robot.h"
+#include "pirouette/vision/floor_segmenter.h"
 #include "pirouette/vision/profile_extractor.h"
 
 namespace pirouette::run {
@@ -60,6 +61,10 @@ struct FrameMasks {
   // (vision::FloorSegmenter::Unresolved); none when empty.
   std::function<const cv::Mat1b&()> unresolved;
 };
+
+// The masks of `segmenter` (its Segment, SettlingFrames and Unresolved),
+// which must outlive them.
+FrameMasks MasksOf(vision::FloorSegmenter& segmenter);
 
 // Builds the occupancy grid of a run from its frames, the same way whether
 // they come live from a robot or from a recorded log, so that a log maps to

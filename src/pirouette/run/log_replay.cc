@@ -108,11 +108,7 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
   const Clock::time_point start = Clock::now();
   std::unique_ptr<vision::FloorSegmenter> segmenter =
       vision::MakeFloorSegmenter(method, setup.camera);
-  FrameMapper mapper(
-      setup,
-      {[&](const cv::Mat3b& bgr) { return segmenter->Segment(bgr); }, segmenter->SettlingFrames(),
-       [&]() -> const cv::Mat1b& { return segmenter->Unresolved(); }},
-      log.rows.front().odometry);
+  FrameMapper mapper(setup, MasksOf(*segmenter), log.rows.front().odometry);
   ExplorationResult result;
   run::ProgressLine progress(quiet);
   for (const io::RunLogRow& row : log.rows) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -210,23 +211,34 @@ core::Rgb DrawObstacleColourOfKind(SeededRandom& random, double pick, const Worl
   return Tinted(random, random.Uniform(20.0, 240.0), 4.0);
 }
 
-// The floor's colour: as close to the walls' as the hard kinds draw it, but
-// never closer in the picture than kMinPictureContrast (each kind is drawn
-// again a few times before the kind is).
-Drawn DrawFloorColour(SeededRandom& random, const core::Rgb& walls, const core::Rgb& inner_walls,
-                      const Light& light) {
+// The first colour `draw_of_kind` draws (given a kind: a pick in [0, 1)) that
+// `stands_out` accepts, each kind drawn again up to kColourTries times before
+// another kind is picked; throws std::runtime_error naming `what` after
+// kKindTries kinds.
+template <typename Colour, typename DrawOfKind, typename StandsOut>
+Colour DrawStandingOut(SeededRandom& random, const DrawOfKind& draw_of_kind,
+                       const StandsOut& stands_out, const char* what) {
   for (int kind = 0; kind < kKindTries; ++kind) {
     const double pick = random.Unit();
     for (int i = 0; i < kColourTries; ++i) {
-      Drawn floor = DrawFloorColourOfKind(random, pick, walls, light);
-      if (PictureContrast(light, walls, floor.colour) >= kMinPictureContrast &&
-          PictureContrast(light, inner_walls, floor.colour) >= kMinPictureContrast) {
-        return floor;
-      }
+      Colour colour = draw_of_kind(pick);
+      if (stands_out(colour)) return colour;
     }
   }
-  throw std::runtime_error(
-      "world generator: found no floor colour that the camera tells from the walls");
+  throw std::runtime_error(std::string("world generator: found no ") + what);
+}
+
+// The floor's colour: as close to the walls' as the hard kinds draw it, but
+// never closer in the picture than kMinPictureContrast.
+Drawn DrawFloorColour(SeededRandom& random, const core::Rgb& walls, const core::Rgb& inner_walls,
+                      const Light& light) {
+  return DrawStandingOut<Drawn>(
+      random, [&](double pick) { return DrawFloorColourOfKind(random, pick, walls, light); },
+      [&](const Drawn& floor) {
+        return PictureContrast(light, walls, floor.colour) >= kMinPictureContrast &&
+               PictureContrast(light, inner_walls, floor.colour) >= kMinPictureContrast;
+      },
+      "floor colour that the camera tells from the walls");
 }
 
 }  // namespace
@@ -289,17 +301,12 @@ WorldStyle DrawStyle(SeededRandom& random, const StyleScale& scale) {
 }
 
 core::Rgb DrawObstacleColour(SeededRandom& random, const WorldStyle& style) {
-  for (int kind = 0; kind < kKindTries; ++kind) {
-    const double pick = random.Unit();
-    for (int i = 0; i < kColourTries; ++i) {
-      const core::Rgb colour = DrawObstacleColourOfKind(random, pick, style);
-      if (PictureContrast(style.light, colour, style.floor.colour) >= kMinPictureContrast) {
-        return colour;
-      }
-    }
-  }
-  throw std::runtime_error(
-      "world generator: found no obstacle colour that the camera tells from the floor");
+  return DrawStandingOut<core::Rgb>(
+      random, [&](double pick) { return DrawObstacleColourOfKind(random, pick, style); },
+      [&](const core::Rgb& colour) {
+        return PictureContrast(style.light, colour, style.floor.colour) >= kMinPictureContrast;
+      },
+      "obstacle colour that the camera tells from the floor");
 }
 
 double DrawObstacleHeight(SeededRandom& random, const StyleScale& scale) {

@@ -9,6 +9,13 @@
 
 namespace pirouette::vision {
 
+const cv::Mat1b& NothingUnresolved() {
+  static const cv::Mat1b kNothing;
+  return kNothing;
+}
+
+const cv::Mat1b& FloorSegmenter::Unresolved() const { return NothingUnresolved(); }
+
 std::optional<SegmentationMethod> ParseSegmentationMethod(std::string_view name) {
   if (name == "paper") return SegmentationMethod::kPaper;
   if (name == "default") return SegmentationMethod::kDefault;

@@ -37,11 +37,11 @@ class FloorSegmenter {
   // segmenter that does not say). ProfileExtractor reads a column whose floor
   // ends at such a pixel as seen free to there, not as an obstacle's base.
   // Valid until the next Segment.
-  virtual const cv::Mat1b& Unresolved() const { return no_unresolved_; }
-
- private:
-  cv::Mat1b no_unresolved_;
+  virtual const cv::Mat1b& Unresolved() const;
 };
+
+// An empty mask: nothing unresolved (FloorSegmenter::Unresolved's default).
+const cv::Mat1b& NothingUnresolved();
 
 enum class SegmentationMethod {
   kPaper,    // Taylor, Geva & Boles 2005: low-pass, Canny, flood fill from the bottom
