@@ -9,6 +9,7 @@
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/core/move.h"
 #include "pirouette/core/pose2.h"
+#include "pirouette/eval/loop_closure_check.h"
 #include "pirouette/eval/pose_error.h"
 #include "pirouette/localize/colour_map.h"
 #include "pirouette/localize/pose_graph.h"
@@ -72,6 +73,9 @@ struct ExplorationResult {
   // With the graph: the graph itself (DIR/graph.g2o), its loop closures,
   // and the time it took.
   std::optional<localize::PoseGraph> graph;
+  std::vector<int> frame_stops;  // the graph's stop of each frame
+  // Its loop closures against the truth; none for a real robot.
+  std::optional<eval::LoopClosureCheck> loop_closure_check;
   int loop_closures_accepted = 0;
   int loop_closures_rejected = 0;
   double optimise_s = 0.0;

@@ -86,14 +86,21 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
       most = std::max(most, t);
     }
     if (!result.per_stop_s.empty()) mean /= static_cast<double>(result.per_stop_s.size());
+    nlohmann::json loops = {{"accepted", result.loop_closures_accepted},
+                            {"rejected", result.loop_closures_rejected}};
+    if (const auto& check = result.loop_closure_check) {
+      // In the simulator: how many accepted closures were within 2 cm and
+      // 1° of the truth, and the worst one's error.
+      loops["correct"] = check->correct;
+      loops["worst_m"] = Round(check->worst_m, 1e-4);
+      loops["worst_deg"] = Round(check->worst_deg, 1e-2);
+    }
     run["localization"] = {
         {"method", "graph"},
         {"stops", result.graph->NodeCount()},
         {"edges", result.graph->edges().size()},
         {"scan_matches", result.scan_matches},
-        {"loop_closures",
-         {{"accepted", result.loop_closures_accepted},
-          {"rejected", result.loop_closures_rejected}}},
+        {"loop_closures", loops},
         {"optimise_s", Round(result.optimise_s, 1e-4)},
         {"per_stop_s", {{"mean", Round(mean, 1e-5)}, {"max", Round(most, 1e-5)}}},
         {"rebuilds", result.rebuilds},

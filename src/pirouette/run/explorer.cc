@@ -99,6 +99,9 @@ ExplorationResult Explorer::Run() {
       result_.stops[i] = mapper_.FramePoses().at(pirouette_frames_[i]);
     }
     result_.graph = graph->graph();
+    for (std::size_t k = 0; k < graph->FrameCount(); ++k) {
+      result_.frame_stops.push_back(graph->StopOf(k));
+    }
     result_.loop_closures_accepted = graph->loop_closures_accepted();
     result_.loop_closures_rejected = graph->loop_closures_rejected();
     result_.scan_matches = graph->scan_matches();

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "pirouette/eval/floor_masker.h"
+#include "pirouette/eval/loop_closure_check.h"
 #include "pirouette/eval/pose_error.h"
 #include "pirouette/run/explorer.h"
 #include "pirouette/sim/sim_robot.h"
@@ -35,6 +36,9 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
       watching);
   result.final_true_pose = robot.TruePose();
   result.pose_error = eval::PoseErrorOf(result.final_frame_poses, truth);
+  if (result.graph) {
+    result.loop_closure_check = eval::CheckLoopClosures(*result.graph, result.frame_stops, truth);
+  }
   if (result.pose_error && result.final_pose) {
     eval::SetFinalError(*result.pose_error, *result.final_pose, robot.TruePose());
   }

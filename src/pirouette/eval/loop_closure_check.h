@@ -1,0 +1,33 @@
+#pragma once
+
+#include <vector>
+
+#include "pirouette/core/pose2.h"
+#include "pirouette/localize/pose_graph.h"
+
+namespace pirouette::eval {
+
+// How true a pose graph's loop closures are, against the simulator's truth
+// (issue 21's precision: an accepted closure is correct when its relative
+// pose lies within 2 cm and 1° of the true one).
+struct LoopClosureCheck {
+  int accepted = 0;  // the graph's loop-closure edges
+  int correct = 0;   // of them, those within the tolerance
+  double worst_m = 0.0;
+  double worst_deg = 0.0;
+};
+
+inline constexpr double kLoopClosureToleranceM = 0.02;
+inline constexpr double kLoopClosureToleranceDeg = 1.0;
+
+// Checks every EdgeKind::kLoopClosure edge of `graph`. A stop's true pose is
+// that of its first frame (a stop's frame is its first frame's: the graph
+// tracker's node_T_frame is the identity there): `frame_stops[k]` is the
+// stop of frame k and `truth[k]` where the simulator had the robot then.
+// Frames past either vector's end are ignored; an edge whose stop has no
+// frame there is not counted. Throws nothing.
+LoopClosureCheck CheckLoopClosures(const localize::PoseGraph& graph,
+                                   const std::vector<int>& frame_stops,
+                                   const std::vector<core::Pose2>& truth);
+
+}  // namespace pirouette::eval
