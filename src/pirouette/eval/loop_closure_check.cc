@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <numbers>
 #include <optional>
 
 #include "pirouette/core/angle.h"
@@ -28,9 +27,11 @@ LoopClosureCheck CheckLoopClosures(const localize::PoseGraph& graph,
     const auto& a = stop_truth[static_cast<std::size_t>(edge.from)];
     const auto& b = stop_truth[static_cast<std::size_t>(edge.to)];
     if (!a || !b) continue;
-    const core::Pose2 error = edge.from_T_to.Inverse() * (a->Inverse() * *b);
-    const double m = error.translation().norm();
-    const double deg = std::abs(core::NormalizeAngle(error.heading())) * 180.0 / std::numbers::pi;
+    // The edge's own residual at the true poses (its translation's length is
+    // the distance between the measured and the true relative position).
+    const Eigen::Vector3d error = localize::EdgeError(*a, *b, edge.from_T_to);
+    const double m = error.head<2>().norm();
+    const double deg = core::RadToDeg(std::abs(error.z()));
     ++check.accepted;
     if (m <= kLoopClosureToleranceM && deg <= kLoopClosureToleranceDeg) ++check.correct;
     check.worst_m = std::max(check.worst_m, m);

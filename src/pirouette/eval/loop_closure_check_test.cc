@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <vector>
 
 #include "pirouette/core/angle.h"
