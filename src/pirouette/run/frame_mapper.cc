@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
+#include "pirouette/core/angle.h"
 #include "pirouette/io/image_io.h"
 #include "pirouette/mapping/range_sensor_model.h"
 #include "pirouette/run/stage_timer.h"
@@ -181,8 +183,16 @@ void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
                           setup_.max_range_m, frame.odometry);
   }
   const std::size_t k = frame_profiles_.size();
+  if (moved >= 0) {
+    // Moves that shift no earlier frame's readings by more than a fraction
+    // of a cell are left out of the map until they add up (or the run ends).
+    const std::optional<std::size_t> displaced = FirstDisplacedFrame(kRemapCells * setup_.cell_m);
+    moved = displaced ? graph_->StopOf(*displaced) : -1;
+    UpdateColourPoses();
+  }
   frame_profiles_.push_back(seen.profile);
   frame_odometry_.push_back(frame.odometry);
+  mapped_poses_.push_back(graph_->FramePose(k));
   // Bumps made on the way here go with this frame (and its stop).
   std::size_t first_new = events_.size();
   for (std::size_t i = 0; i < events_.size(); ++i) {
@@ -195,9 +205,10 @@ void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
     }
   }
   if (starts) {
-    // The map before the stop (made again in Rebuild when stops moved).
-    stop_first_event_ = first_new;
-    if (moved < 0) before_stop_ = grid_;
+    // The map before the stop (made again by Replay when a rebuild passes it).
+    snapshots_.push_back({graph_->StopOf(k), first_new, std::nullopt});
+    if (moved < 0) snapshots_.back().grid = grid_;
+    if (snapshots_.size() > kSnapshots) snapshots_.pop_front();
   }
   events_.emplace_back(MapEvent::Kind::kFrame, k);
   seen.pose = graph_->FramePose(k);
@@ -205,14 +216,15 @@ void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
   if (moved < 0) {
     for (std::size_t i = first_new; i < events_.size(); ++i) Apply(events_[i]);
   } else {
-    Rebuild(moved == graph_->StopOf(k) && !starts);
+    Rebuild(moved);
   }
 }
 
 void FrameMapper::Apply(const MapEvent& event) {
   switch (event.kind) {
     case MapEvent::Kind::kFrame:
-      Insert(frame_profiles_[event.frame], graph_->FramePose(event.frame));
+      mapped_poses_[event.frame] = graph_->FramePose(event.frame);
+      Insert(frame_profiles_[event.frame], mapped_poses_[event.frame]);
       break;
     case MapEvent::Kind::kConfirm:
       Confirm(frame_profiles_[event.frame], graph_->FramePose(event.frame), event.leg_m);
@@ -229,25 +241,48 @@ void FrameMapper::Apply(const MapEvent& event) {
 }
 
 void FrameMapper::Replay(std::size_t from) {
+  auto next = snapshots_.begin();
   for (std::size_t i = from; i < events_.size(); ++i) {
-    if (i == stop_first_event_) before_stop_ = grid_;
+    while (next != snapshots_.end() && next->first_event < i) ++next;
+    if (next != snapshots_.end() && next->first_event == i) next->grid = grid_;
     Apply(events_[i]);
   }
 }
 
-void FrameMapper::Rebuild(bool from_stop_start) {
+void FrameMapper::Rebuild(int from_stop) {
   run::StageTimer timer(rebuild_s_);
   ++rebuilds_;
-  if (from_stop_start && before_stop_) {
-    grid_ = *before_stop_;
-    Replay(stop_first_event_);
+  // From the latest map kept from before a stop no later than from_stop, or
+  // from nothing.
+  auto kept = std::find_if(snapshots_.rbegin(), snapshots_.rend(), [&](const StopSnapshot& s) {
+    return s.stop <= from_stop && s.grid.has_value();
+  });
+  if (kept != snapshots_.rend()) {
+    grid_ = *kept->grid;
+    Replay(kept->first_event);
   } else {
     grid_ = InitialGrid(start_, setup_);
     Replay(0);
   }
+  UpdateColourPoses();
+}
+
+void FrameMapper::UpdateColourPoses() {
   for (std::size_t i = 0; i < colour_frames_.size(); ++i) {
     colour_frames_[i].pose = graph_->FramePose(i);
   }
+}
+
+std::optional<std::size_t> FrameMapper::FirstDisplacedFrame(double tolerance_m) const {
+  for (std::size_t k = 0; k < mapped_poses_.size(); ++k) {
+    const core::Pose2& was = mapped_poses_[k];
+    const core::Pose2 now = graph_->FramePose(k);
+    const double shift =
+        (now.translation() - was.translation()).norm() +
+        setup_.max_range_m * std::abs(core::NormalizeAngle(now.heading() - was.heading()));
+    if (shift > tolerance_m) return k;
+  }
+  return std::nullopt;
 }
 
 void FrameMapper::Finish() {
@@ -258,7 +293,8 @@ void FrameMapper::Finish() {
     run::StageTimer timer(localize_s_);
     moved = graph_->Finish();
   }
-  if (moved >= 0) Rebuild(false);
+  // The last map from every frame exactly where the graph ends up.
+  if (moved >= 0 || FirstDisplacedFrame(0.0)) Rebuild(0);
 }
 
 std::vector<core::Pose2> FrameMapper::FramePoses() const {
