@@ -186,7 +186,8 @@ void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
   if (moved >= 0) {
     // Moves that shift no earlier frame's readings by more than a fraction
     // of a cell are left out of the map until they add up (or the run ends).
-    const std::optional<std::size_t> displaced = FirstDisplacedFrame(kRemapCells * setup_.cell_m);
+    const std::optional<std::size_t> displaced =
+        FirstDisplacedFrame(setup_.remap_cells * setup_.cell_m);
     moved = displaced ? graph_->StopOf(*displaced) : -1;
     UpdateColourPoses();
   }
@@ -265,6 +266,14 @@ void FrameMapper::Rebuild(int from_stop) {
     Replay(0);
   }
   UpdateColourPoses();
+}
+
+mapping::OccupancyGrid FrameMapper::MapAgain() const {
+  if (!graph_) return grid_;
+  FrameMapper again = *this;
+  again.snapshots_.clear();
+  again.Rebuild(0);
+  return std::move(again.grid_);
 }
 
 void FrameMapper::UpdateColourPoses() {

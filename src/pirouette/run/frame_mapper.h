@@ -36,6 +36,10 @@ struct MapperSetup {
   std::optional<localize::GraphTrackerOptions> graph;
   // The longest side the map may grow to, metres; 0: kDefaultMaxMapCells cells.
   double max_map_m = 0.0;
+  // With the graph: how far (in cells, at the map's range) the optimisation
+  // may move a frame's readings before the map is made again with it; 0:
+  // after every move, so that the map is always the one made from nothing.
+  double remap_cells = 0.25;
 };
 
 // The map's longest side by default, in cells: 41 m at 1 cm, 82 m at 2 cm,
@@ -82,11 +86,11 @@ FrameMasks MasksOf(vision::FloorSegmenter& segmenter);
 // was before the stop: the map's frame is the odometry's at the start, and
 // ToMap turns any later odometry pose into it.
 // With the graph (setup.graph), every frame, bump and confirmation is kept
-// with its stop, and whenever the graph's optimisation moves stops the map is
-// made again from all of them at their stops' new poses (from the current
-// stop's first frame when only the current stop moved), so a hit moves with
-// its stop and nothing is frozen (Grisetti et al. 2010: the map is a function
-// of the poses).
+// with its stop, and whenever the graph's optimisation moves a frame's
+// readings by more than a quarter of a cell the map is made again from that
+// frame's stop on, at the stops' new poses, so a hit moves with its stop and
+// nothing is frozen (Grisetti et al. 2010: the map is a function of the
+// poses); Finish makes it from every frame at its final pose.
 class FrameMapper {
  public:
   // The grid starts as 2 m square around `start` (odometry frame) and grows.
@@ -128,6 +132,12 @@ class FrameMapper {
   // Where every frame is now in the map (the odometry's without tracking;
   // the tracker's or the graph's latest).
   std::vector<core::Pose2> FramePoses() const;
+  // With the graph: the map made again from nothing, every frame, bump and
+  // confirmation at the graph's poses now. It is what grid() is after
+  // Finish, and during a run grid() keeps each frame within a quarter cell
+  // of it (a check on the incremental rebuild; it copies the mapper). Without
+  // the graph: grid().
+  mapping::OccupancyGrid MapAgain() const;
   // Seconds spent making the map again after the graph moved stops, and how
   // many times.
   double rebuild_s() const { return rebuild_s_; }
@@ -209,11 +219,11 @@ class FrameMapper {
   // The first frame whose readings the graph has moved by more than
   // tolerance_m at the map's range (its shift plus the range times its turn)
   // since it went into the map, or none. A map kept while the graph nudges
-  // stops by less than kRemapCells of a cell differs from one made again by
-  // less than the map shows, and costs no rebuild (a rebuild replays every
-  // frame: 0.12 s at 5,700 frames, a quarter of a noisy apartment's run).
+  // stops by less than setup.remap_cells of a cell differs from one made
+  // again by less than the map shows, and costs no rebuild (a rebuild from
+  // nothing replays every frame: 0.12 s at 5,700 frames, a quarter of a
+  // noisy apartment's run).
   std::optional<std::size_t> FirstDisplacedFrame(double tolerance_m) const;
-  static constexpr double kRemapCells = 0.25;
   void UpdateColourPoses();  // to the graph's latest frame poses
   static void InsertBump(mapping::OccupancyGrid& grid, const core::Pose2& map_T_robot,
                          double radius_m, double cell_m);
