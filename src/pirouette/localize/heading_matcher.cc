@@ -147,21 +147,33 @@ std::optional<double> AgreementAt(const core::RangeReading& reading,
                                   const core::ObstacleProfile& view, double bearing,
                                   const HeadingMatcherOptions& options) {
   const std::vector<core::RangeReading>& r = view.readings;
-  // Columns run left to right: bearings decrease.
-  for (std::size_t i = 0; i + 1 < r.size(); ++i) {
-    const double hi = r[i].bearing_rad;
-    const double lo = r[i + 1].bearing_rad;
-    if (bearing > hi || bearing < lo) continue;
-    const bool hit_i = r[i].kind != core::ReadingKind::kClear;
-    const bool hit_j = r[i + 1].kind != core::ReadingKind::kClear;
-    if (hit_i != hit_j || hi - lo <= 0.0) {
-      return std::max(AgreesWith(reading, r[i].kind, r[i].range_m, options),
-                      AgreesWith(reading, r[i + 1].kind, r[i + 1].range_m, options));
-    }
-    const double t = (hi - bearing) / (hi - lo);
-    return AgreesWith(reading, r[i].kind, (1.0 - t) * r[i].range_m + t * r[i + 1].range_m, options);
+  // Columns run left to right: bearings decrease, nearly: a reading's
+  // bearing is its floor point's, which under lens distortion moves with its
+  // row, so neighbouring columns may cross by a hundredth of a degree. The
+  // pair either side, i and i + 1 with r[i] >= bearing > r[i + 1] (or the
+  // last pair), by bisection, which keeps that bracket whatever the order (a
+  // scan of the columns for the first such pair was most of a noisy run's
+  // tracking: bench/heading_bench.cc; where columns cross, the two may take
+  // different brackets, both around the bearing).
+  if (r.size() < 2 || !(bearing <= r.front().bearing_rad) || !(bearing >= r.back().bearing_rad)) {
+    return std::nullopt;
   }
-  return std::nullopt;
+  std::size_t i = 0;
+  std::size_t below = r.size() - 1;
+  while (below - i > 1) {
+    const std::size_t mid = i + (below - i) / 2;
+    (r[mid].bearing_rad >= bearing ? i : below) = mid;
+  }
+  const double hi = r[i].bearing_rad;
+  const double lo = r[i + 1].bearing_rad;
+  const bool hit_i = r[i].kind != core::ReadingKind::kClear;
+  const bool hit_j = r[i + 1].kind != core::ReadingKind::kClear;
+  if (hit_i != hit_j || hi - lo <= 0.0) {
+    return std::max(AgreesWith(reading, r[i].kind, r[i].range_m, options),
+                    AgreesWith(reading, r[i + 1].kind, r[i + 1].range_m, options));
+  }
+  const double t = (hi - bearing) / (hi - lo);
+  return AgreesWith(reading, r[i].kind, (1.0 - t) * r[i].range_m + t * r[i + 1].range_m, options);
 }
 
 // Whether `bearing` (robot frame) lies within the view's columns.
