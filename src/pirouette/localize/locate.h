@@ -44,7 +44,7 @@ inline constexpr double kColourMismatchFactor = 0.5;
 
 // The thresholds of an answer.
 struct LocateOptions {
-  int candidates = 30;                  // table places refined (the best coarse scores)
+  int candidates = 30;  // table places refined (the best coarse scores)
   // The best's score must reach this. 0.85 until 2026-12-05: on generated
   // worlds the best candidate was right at 100 of the 115 poses it refused,
   // mostly scoring 0.6-0.85 with the margin below keeping every wrong best
