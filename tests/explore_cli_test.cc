@@ -49,10 +49,12 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
   EXPECT_TRUE(json.contains("pose_error"));
   // In the simulator the loop closures are checked against the truth.
   const nlohmann::json& loops = json["localization"]["loop_closures"];
-  for (const char* field : {"accepted", "rejected", "correct", "worst_m", "worst_deg"}) {
+  for (const char* field :
+       {"accepted", "rejected", "correct", "worst_m", "worst_deg", "opportunities", "closed"}) {
     EXPECT_TRUE(loops.contains(field)) << field;
   }
   EXPECT_LE(loops["correct"].get<int>(), loops["accepted"].get<int>());
+  EXPECT_LE(loops["closed"].get<int>(), loops["opportunities"].get<int>());
   EXPECT_GE(json["pirouettes"].get<int>(), 1);
   EXPECT_GE(json["frames"].get<int>(), 12);
   for (const char* field : {"turns", "path_length_m", "rotation_deg", "wall_time_s"}) {

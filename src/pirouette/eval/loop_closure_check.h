@@ -30,4 +30,20 @@ LoopClosureCheck CheckLoopClosures(const localize::PoseGraph& graph,
                                    const std::vector<int>& frame_stops,
                                    const std::vector<core::Pose2>& truth);
 
+// How many of the loops there were to close the graph closed (issue 21's
+// recall), by the graph's own rule applied to the truth: a stop had a loop
+// to close when the earlier stop truly nearest it lies within reach_m (the
+// graph's overlap reach) and more than loop_path_m back along the stops'
+// true path (GraphTrackerOptions::loop_path_m); it closed it when the graph
+// holds an EdgeKind::kLoopClosure edge into it. Stops' true poses as
+// CheckLoopClosures takes them; stops with no true frame are left out.
+struct LoopClosureRecall {
+  int opportunities = 0;
+  int closed = 0;
+};
+LoopClosureRecall CheckLoopClosureRecall(const localize::PoseGraph& graph,
+                                         const std::vector<int>& frame_stops,
+                                         const std::vector<core::Pose2>& truth, double reach_m,
+                                         double loop_path_m);
+
 }  // namespace pirouette::eval

@@ -61,5 +61,26 @@ TEST(CheckLoopClosures, AStopWithoutATrueFrameIsNotCounted) {
   EXPECT_EQ(CheckLoopClosures(f.graph, f.frame_stops, {}).accepted, 0);
 }
 
+// Stop 2 comes back 11 cm from stop 0 after 3.9 m of path: a loop to close
+// within a reach of 0.5 m and a loop path of 2 m; not with a 5 m loop path,
+// nor a 10 cm reach. Stop 1 has only stop 0 before it, 2 m back and out of
+// reach.
+TEST(CheckLoopClosureRecall, CountsTheLoopsTheTruthHadAndThoseTheGraphClosed) {
+  Fixture f;
+  LoopClosureRecall recall = CheckLoopClosureRecall(f.graph, f.frame_stops, f.truth, 0.5, 2.0);
+  EXPECT_EQ(recall.opportunities, 1);
+  EXPECT_EQ(recall.closed, 0);
+  f.Close(0, 1, Pose2(2, 0, 1), EdgeKind::kScanMatch);  // not a closure
+  EXPECT_EQ(CheckLoopClosureRecall(f.graph, f.frame_stops, f.truth, 0.5, 2.0).closed, 0);
+  f.Close(0, 2, f.True(0, 2));
+  recall = CheckLoopClosureRecall(f.graph, f.frame_stops, f.truth, 0.5, 2.0);
+  EXPECT_EQ(recall.opportunities, 1);
+  EXPECT_EQ(recall.closed, 1);
+  EXPECT_EQ(CheckLoopClosureRecall(f.graph, f.frame_stops, f.truth, 0.5, 5.0).opportunities, 0);
+  EXPECT_EQ(CheckLoopClosureRecall(f.graph, f.frame_stops, f.truth, 0.1, 2.0).opportunities, 0);
+  f.truth.resize(4);  // stop 2's truth unknown
+  EXPECT_EQ(CheckLoopClosureRecall(f.graph, f.frame_stops, f.truth, 0.5, 2.0).opportunities, 0);
+}
+
 }  // namespace
 }  // namespace pirouette::eval

@@ -260,8 +260,7 @@ int GraphTracker::MatchAndOptimise(int node) {
   int moved = -1;
   // The earlier stops whose views may overlap this one's, as one local map;
   // the edge from the nearest of them.
-  const double reach =
-      options_.overlap_range_factor * options_.stop.hit_range_factor * map_range_m_;
+  const double reach = OverlapReachM();
   const Eigen::Vector2d here = graph_.pose(node).translation();
   std::vector<int> references;
   int nearest = -1;

@@ -119,6 +119,13 @@ class GraphTracker {
   int StopOf(std::size_t k) const { return frames_.at(k).node; }
 
   const PoseGraph& graph() const { return graph_; }
+  // How near an earlier stop must be for its views to overlap a new one's
+  // (it joins the new stop's local map), metres: overlap_range_factor times
+  // the hits' range; 0 before the first frame.
+  double OverlapReachM() const {
+    return options_.overlap_range_factor * options_.stop.hit_range_factor * map_range_m_;
+  }
+  double loop_path_m() const { return options_.loop_path_m; }
   int loop_closures_accepted() const { return loops_accepted_; }
   int loop_closures_rejected() const { return loops_rejected_; }
   int scan_matches() const { return scan_matches_; }

@@ -95,6 +95,12 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
       loops["worst_m"] = Round(check->worst_m, 1e-4);
       loops["worst_deg"] = Round(check->worst_deg, 1e-2);
     }
+    if (const auto& recall = result.loop_closure_recall) {
+      // In the simulator: the stops that had a loop to close by the graph's
+      // own rule at the true poses, and how many it closed.
+      loops["opportunities"] = recall->opportunities;
+      loops["closed"] = recall->closed;
+    }
     run["localization"] = {
         {"method", "graph"},
         {"stops", result.graph->NodeCount()},
