@@ -125,7 +125,6 @@ class GraphTracker {
   double OverlapReachM() const {
     return options_.overlap_range_factor * options_.stop.hit_range_factor * map_range_m_;
   }
-  double loop_path_m() const { return options_.loop_path_m; }
   int loop_closures_accepted() const { return loops_accepted_; }
   int loop_closures_rejected() const { return loops_rejected_; }
   int scan_matches() const { return scan_matches_; }

@@ -77,9 +77,8 @@ struct ExplorationResult {
   // Its loop closures against the truth; none for a real robot.
   std::optional<eval::LoopClosureCheck> loop_closure_check;
   std::optional<eval::LoopClosureRecall> loop_closure_recall;  // in the simulator
-  // The graph's overlap reach and loop path (GraphTracker), for the recall.
+  // The graph's overlap reach (GraphTracker::OverlapReachM), for the recall.
   double loop_reach_m = 0.0;
-  double loop_path_m = 0.0;
   int loop_closures_accepted = 0;
   int loop_closures_rejected = 0;
   double optimise_s = 0.0;

@@ -104,7 +104,6 @@ ExplorationResult Explorer::Run() {
     }
     result_.loop_closures_accepted = graph->loop_closures_accepted();
     result_.loop_reach_m = graph->OverlapReachM();
-    result_.loop_path_m = graph->loop_path_m();
     result_.loop_closures_rejected = graph->loop_closures_rejected();
     result_.scan_matches = graph->scan_matches();
     result_.optimise_s = graph->optimise_s();

@@ -38,8 +38,9 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
   result.pose_error = eval::PoseErrorOf(result.final_frame_poses, truth);
   if (result.graph) {
     result.loop_closure_check = eval::CheckLoopClosures(*result.graph, result.frame_stops, truth);
-    result.loop_closure_recall = eval::CheckLoopClosureRecall(
-        *result.graph, result.frame_stops, truth, result.loop_reach_m, result.loop_path_m);
+    result.loop_closure_recall =
+        eval::CheckLoopClosureRecall(*result.graph, result.frame_stops, truth, result.loop_reach_m,
+                                     explore_options.graph.loop_path_m);
   }
   if (result.pose_error && result.final_pose) {
     eval::SetFinalError(*result.pose_error, *result.final_pose, robot.TruePose());
