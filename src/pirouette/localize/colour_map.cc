@@ -1,9 +1,9 @@
 #include "pirouette/localize/colour_map.h"
 
-#include <algorithm>
-#include <array>
 #include <stdexcept>
 #include <utility>
+
+#include "pirouette/localize/colour_votes.h"
 
 namespace pirouette::localize {
 
@@ -16,23 +16,15 @@ ColourMap::ColourMap(core::GridGeometry geometry, std::vector<core::ColourClass>
 
 ColourMap ColourMap::FromSightings(const core::GridGeometry& geometry,
                                    const std::vector<ColourSighting>& sightings) {
-  std::vector<std::array<int, core::kColourClasses>> votes(geometry.CellCount());
-  for (const ColourSighting& s : sightings) {
-    if (s.colour == core::ColourClass::kNone) continue;
-    const core::CellIndex c = geometry.CellOf(s.p_m);
-    if (!geometry.Contains(c)) continue;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const core::CellIndex n{c.x + dx, c.y + dy};
-        if (!geometry.Contains(n)) continue;
-        votes[geometry.Flat(n)][static_cast<std::size_t>(s.colour)] += dx == 0 && dy == 0 ? 2 : 1;
-      }
-    }
-  }
+  ColourVotes votes(geometry);
+  for (const ColourSighting& s : sightings) votes.Add(s);
+  return votes.Map();
+}
+
+ColourMap ColourMap::On(const core::GridGeometry& geometry) const {
   std::vector<core::ColourClass> cells(geometry.CellCount(), core::ColourClass::kNone);
-  for (std::size_t i = 0; i < votes.size(); ++i) {
-    const auto best = std::max_element(votes[i].begin(), votes[i].end());
-    if (*best > 0) cells[i] = static_cast<core::ColourClass>(best - votes[i].begin());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    cells[i] = At(geometry_.CellOf(geometry.CellCentre(geometry.Unflat(i))));
   }
   return {geometry, std::move(cells)};
 }

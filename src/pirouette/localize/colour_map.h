@@ -33,9 +33,13 @@ class ColourMap {
   // cells take the colour seen at their neighbours' (an obstacle's base is
   // read to a cell or so); a cell takes the class with the most votes (the
   // lowest class on a tie), kNone without votes. Sightings off the geometry
-  // are dropped.
+  // are dropped (ColourVotes counts them one at a time).
   static ColourMap FromSightings(const core::GridGeometry& geometry,
                                  const std::vector<ColourSighting>& sightings);
+
+  // This map on another geometry (of the same cell size, e.g. a crop of
+  // it): each cell the class at its centre here, kNone off this map.
+  ColourMap On(const core::GridGeometry& geometry) const;
 
   bool empty() const { return cells_.empty(); }
   const core::GridGeometry& geometry() const { return geometry_; }

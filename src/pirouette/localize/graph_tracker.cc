@@ -94,7 +94,11 @@ int GraphTracker::Track(const mapping::OccupancyGrid& map, const core::ObstacleP
   if (starts && !stops_.empty() && !stops_.back().matched) {
     moved = MatchAndOptimise(static_cast<int>(stops_.size()) - 1);
   }
-  if (starts && !stops_.empty()) stops_.back().hits = HitsOf(static_cast<int>(stops_.size()) - 1);
+  if (starts && !stops_.empty()) {
+    const int last = static_cast<int>(stops_.size()) - 1;
+    stops_.back().hits = HitsOf(last);
+    ReleaseProfiles(last);
+  }
   const int accepted_before = stop_.accepted();
   const std::vector<core::Pose2> inner = stop_.Track(map, profile, map_range_m, odom_T_robot);
   // A turn the stop's heading match corrected leaves the match's error; one
@@ -152,6 +156,13 @@ int GraphTracker::Finish() {
   const int moved = MatchAndOptimise(node);
   stops_.back().hits = HitsOf(node);
   return moved;
+}
+
+void GraphTracker::ReleaseProfiles(int node) {
+  const Stop& stop = stops_.at(static_cast<std::size_t>(node));
+  for (std::size_t k = stop.first_frame; k < frames_.size() && frames_[k].node == node; ++k) {
+    frames_[k].profile = core::ObstacleProfile();
+  }
 }
 
 std::vector<Eigen::Vector2d> GraphTracker::HitsOf(int node) const {

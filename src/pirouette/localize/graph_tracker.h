@@ -136,6 +136,8 @@ class GraphTracker {
   struct Frame {
     int node = 0;
     core::Pose2 node_T_frame;  // the frame in its stop's frame (a heading only)
+    // Read only while its stop is the last; emptied when the next starts
+    // (the stop's hits hold what the graph needs of it from then on).
     core::ObstacleProfile profile;
   };
   struct Stop {
@@ -150,6 +152,9 @@ class GraphTracker {
   // The hits of a stop's frames in its frame: the nearest in each degree of
   // bearing, out to the hits' range.
   std::vector<Eigen::Vector2d> HitsOf(int node) const;
+  // Frees the profiles of a stop whose hits are final (a noisy apartment's
+  // 7,000 frames held 100 MB of them).
+  void ReleaseProfiles(int node);
   // The odometry edge into the new stop `to` (pending_odometry_) from the
   // one before; returns its relative pose.
   core::Pose2 AddOdometryEdge(int to, const Stop& stop);

@@ -42,9 +42,9 @@ struct ExplorationResult {
   std::string reason;  // why, when stuck
   // The map, in the odometry frame (placeholder 1 × 1 until the run starts).
   mapping::OccupancyGrid grid{core::GridGeometry(0.01, Eigen::Vector2d::Zero(), 1, 1)};
-  // The map's colour layer: what the frames saw standing on the floor
-  // (FrameMapper::ColourSightings).
-  std::vector<localize::ColourSighting> colour_sightings;
+  // The map's colour layer on the grid's geometry: what the frames saw
+  // standing on the floor (FrameMapper::MakeColourMap).
+  localize::ColourMap colour_map;
   std::vector<core::Pose2> path;   // odometry poses after every move, from the start
   std::vector<core::Pose2> stops;  // where the robot pirouetted
   int moves = 0;                   // straight moves

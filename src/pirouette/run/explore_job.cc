@@ -159,7 +159,7 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
   const mapping::OccupancyGrid seen = SeenPart(result.grid);
   mapping::TrinaryMap map = seen.ToTrinary();
   io::WriteRosMap(map, (out / "map.yaml").string());
-  io::WriteColourMap(localize::ColourMap::FromSightings(map.geometry, result.colour_sightings),
+  io::WriteColourMap(result.colour_map.On(map.geometry),
                      io::ColourMapPathFor((out / "map.yaml").string()));
   io::WritePng((out / "map.png").string(),
                draw::DrawMapPicture(seen, result.path, result.stops, kMapPictureWidthPx,

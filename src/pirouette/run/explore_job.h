@@ -71,8 +71,8 @@ mapping::OccupancyGrid SeenPart(const mapping::OccupancyGrid& grid);
 
 // Writes OUT/map.yaml, OUT/map.pgm (the part of the result's grid the robot
 // saw, with a margin), OUT/map.png (with its path and stops) and
-// OUT/map_colours.png (its colour layer: localize::ColourMap::FromSightings of
-// the result's colour sightings, io::WriteColourMap), atomically; returns
+// OUT/map_colours.png (the result's colour layer on that part,
+// io::WriteColourMap), atomically; returns
 // the map written.
 mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result);
 

@@ -121,7 +121,7 @@ ExplorationResult Explorer::Run() {
     result_.matches = mapper_.tracker()->matches();
     result_.scan_matches = mapper_.tracker()->scan_matches();
   }
-  result_.colour_sightings = mapper_.ColourSightings();
+  result_.colour_map = mapper_.MakeColourMap();
   result_.grid = mapper_.TakeGrid();
   return std::move(result_);
 }

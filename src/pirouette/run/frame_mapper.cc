@@ -9,6 +9,7 @@
 
 #include "pirouette/core/angle.h"
 #include "pirouette/io/image_io.h"
+#include "pirouette/localize/colour_votes.h"
 #include "pirouette/mapping/range_sensor_model.h"
 #include "pirouette/run/stage_timer.h"
 #include "pirouette/vision/column_colour.h"
@@ -36,21 +37,6 @@ mapping::OccupancyGrid InitialGrid(const core::Pose2& start, const MapperSetup& 
       static_cast<int>(std::clamp(side_cells, static_cast<double>(grid.geometry().width()),
                                   static_cast<double>(mapping::OccupancyGrid::kMaxSideCells))));
   return grid;
-}
-
-// The colours of a frame's hits, in the robot's frame.
-std::vector<localize::ColourSighting> ColouredHits(const cv::Mat3b& bgr, const cv::Mat1b& mask,
-                                                   const core::ObstacleProfile& profile) {
-  std::vector<localize::ColourSighting> hits;
-  for (std::size_t u = 0; u < profile.readings.size(); ++u) {
-    const core::RangeReading& r = profile.readings[u];
-    if (r.kind != core::ReadingKind::kHit) continue;
-    const core::ColourClass c = vision::ColumnColour(bgr, mask, static_cast<int>(u));
-    if (c == core::ColourClass::kNone) continue;
-    hits.push_back(
-        {r.range_m * Eigen::Vector2d(std::cos(r.bearing_rad), std::sin(r.bearing_rad)), c});
-  }
-  return hits;
 }
 
 }  // namespace
@@ -191,7 +177,7 @@ void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
     moved = displaced ? graph_->StopOf(*displaced) : -1;
     UpdateColourPoses();
   }
-  frame_profiles_.push_back(seen.profile);
+  frame_profiles_.emplace_back(seen.profile);
   frame_odometry_.push_back(frame.odometry);
   mapped_poses_.push_back(graph_->FramePose(k));
   // Bumps made on the way here go with this frame (and its stop).
@@ -225,10 +211,10 @@ void FrameMapper::Apply(const MapEvent& event) {
   switch (event.kind) {
     case MapEvent::Kind::kFrame:
       mapped_poses_[event.frame] = graph_->FramePose(event.frame);
-      Insert(frame_profiles_[event.frame], mapped_poses_[event.frame]);
+      Insert(frame_profiles_[event.frame].Unpack(), mapped_poses_[event.frame]);
       break;
     case MapEvent::Kind::kConfirm:
-      Confirm(frame_profiles_[event.frame], graph_->FramePose(event.frame), event.leg_m);
+      Confirm(frame_profiles_[event.frame].Unpack(), graph_->FramePose(event.frame), event.leg_m);
       break;
     case MapEvent::Kind::kContact: {
       run::StageTimer timer(update_s_);
@@ -313,14 +299,29 @@ std::vector<core::Pose2> FrameMapper::FramePoses() const {
   return poses;
 }
 
-std::vector<localize::ColourSighting> FrameMapper::ColourSightings() const {
-  std::vector<localize::ColourSighting> out;
+std::vector<FrameMapper::ColourHit> FrameMapper::ColouredHits(
+    const cv::Mat3b& bgr, const cv::Mat1b& mask, const core::ObstacleProfile& profile) {
+  std::vector<ColourHit> hits;
+  for (std::size_t u = 0; u < profile.readings.size(); ++u) {
+    const core::RangeReading& r = profile.readings[u];
+    if (r.kind != core::ReadingKind::kHit) continue;
+    const core::ColourClass c = vision::ColumnColour(bgr, mask, static_cast<int>(u));
+    if (c == core::ColourClass::kNone) continue;
+    hits.push_back({(r.range_m * Eigen::Vector2d(std::cos(r.bearing_rad), std::sin(r.bearing_rad)))
+                        .cast<float>(),
+                    c});
+  }
+  return hits;
+}
+
+localize::ColourMap FrameMapper::MakeColourMap() const {
+  localize::ColourVotes votes(grid_.geometry());
   for (const ColourFrame& f : colour_frames_) {
-    for (const localize::ColourSighting& h : f.hits_robot) {
-      out.push_back({f.pose * h.p_m, h.colour});
+    for (const ColourHit& h : f.hits_robot) {
+      votes.Add({f.pose * h.p_robot.cast<double>(), h.colour});
     }
   }
-  return out;
+  return votes.Map();
 }
 
 void FrameMapper::Insert(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot) {
@@ -377,6 +378,9 @@ void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
     confirm.frame = frame_profiles_.size() - 1;
     confirm.leg_m = leg_m;
     events_.push_back(confirm);
+    // As a rebuild will put it in again: from the frame's packed profile.
+    Confirm(frame_profiles_.back().Unpack(), map_T_robot, leg_m);
+    return;
   }
   Confirm(profile, map_T_robot, leg_m);
 }

@@ -10,6 +10,7 @@
 #include "pirouette/camera/camera_model.h"
 #include "pirouette/camera/inverse_perspective_map.h"
 #include "pirouette/core/obstacle_profile.h"
+#include "pirouette/core/packed_profile.h"
 #include "pirouette/core/pose2.h"
 #include "pirouette/explore/look_ahead.h"
 #include "pirouette/localize/colour_map.h"
@@ -153,10 +154,11 @@ class FrameMapper {
   void ConfirmBlocking(const core::ObstacleProfile& profile, const core::Pose2& map_T_robot,
                        double leg_m);
 
-  // Where the frames saw the bases of obstacles and their colours
-  // (vision::ColumnColour of each hit's column), at the frames' map poses (with
-  // tracking, where the tracker last put them): the map's colour layer.
-  std::vector<localize::ColourSighting> ColourSightings() const;
+  // The map's colour layer on the map's geometry: where the frames saw the
+  // bases of obstacles and their colours (vision::ColumnColour of each hit's
+  // column), at the frames' map poses (with tracking, where the tracker last
+  // put them), voted as localize::ColourMap::FromSightings says.
+  localize::ColourMap MakeColourMap() const;
 
   const mapping::OccupancyGrid& grid() const { return grid_; }
   mapping::OccupancyGrid TakeGrid() { return std::move(grid_); }
@@ -229,7 +231,7 @@ class FrameMapper {
                          double radius_m, double cell_m);
   std::optional<localize::GraphTracker> graph_;
   std::vector<MapEvent> events_;
-  std::vector<core::ObstacleProfile> frame_profiles_;  // each frame's, at the map's range
+  std::vector<core::PackedProfile> frame_profiles_;  // each frame's, at the map's range
   std::vector<core::Pose2> frame_odometry_;
   std::vector<core::Pose2> mapped_poses_;  // each frame's pose when it last went into grid_
   // The map before each of the last kSnapshots stops: the graph moves
@@ -255,11 +257,20 @@ class FrameMapper {
     core::ObstacleProfile profile;
     std::optional<double> blocked_leg_m;  // a ConfirmBlocking of the frame before
   };
-  // Every frame's coloured hits in the robot's frame, and its map pose.
+  // Every frame's coloured hits in the robot's frame (as floats: 12 bytes a
+  // hit, not a ColourSighting's 24, for a few hundred a frame), and its map pose.
+  struct ColourHit {
+    Eigen::Vector2f p_robot;
+    core::ColourClass colour = core::ColourClass::kNone;
+  };
   struct ColourFrame {
     core::Pose2 pose;
-    std::vector<localize::ColourSighting> hits_robot;
+    std::vector<ColourHit> hits_robot;
   };
+  // Each hit's reading in the frame's robot frame, with its column's colour
+  // (vision::ColumnColour); columns without a colour are left out.
+  static std::vector<ColourHit> ColouredHits(const cv::Mat3b& bgr, const cv::Mat1b& mask,
+                                             const core::ObstacleProfile& profile);
   std::vector<ColourFrame> colour_frames_;
   std::optional<mapping::OccupancyGrid> before_stop_;
   std::vector<StopEvent> stop_events_;

@@ -185,7 +185,7 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
   result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
   result.times.perceive_s = mapper.perceive_s();
   result.times.update_s = mapper.update_s();
-  result.colour_sightings = mapper.ColourSightings();
+  result.colour_map = mapper.MakeColourMap();
   result.grid = mapper.TakeGrid();
   return result;
 }
