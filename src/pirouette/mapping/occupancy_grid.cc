@@ -209,4 +209,25 @@ OccupancyGrid OccupancyGrid::CroppedToKnown(int margin_cells) const {
   return cropped;
 }
 
+void OccupancyGrid::Restore(const OccupancyGrid& part) {
+  const double r = geometry_.resolution();
+  const Eigen::Vector2d offset = (part.geometry_.origin() - geometry_.origin()) / r;
+  const int x0 = static_cast<int>(std::lround(offset.x()));
+  const int y0 = static_cast<int>(std::lround(offset.y()));
+  if (part.geometry_.resolution() != r || std::abs(offset.x() - x0) > 1e-6 ||
+      std::abs(offset.y() - y0) > 1e-6 || x0 < 0 || y0 < 0 ||
+      x0 + part.geometry_.width() > geometry_.width() ||
+      y0 + part.geometry_.height() > geometry_.height()) {
+    throw std::invalid_argument(
+        "OccupancyGrid::Restore: the part must lie within the grid, at whole cells");
+  }
+  std::fill(cells_.begin(), cells_.end(), Cell{});
+  for (int y = 0; y < part.geometry_.height(); ++y) {
+    const auto row = part.cells_.begin() + static_cast<std::ptrdiff_t>(part.geometry_.Flat({0, y}));
+    std::copy(row, row + part.geometry_.width(),
+              cells_.begin() + static_cast<std::ptrdiff_t>(geometry_.Flat({x0, y0 + y})));
+  }
+  frame_ = part.frame_;
+}
+
 }  // namespace pirouette::mapping

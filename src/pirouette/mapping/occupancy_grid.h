@@ -141,6 +141,13 @@ class OccupancyGrid {
   // plus `margin_cells` all round (the same cells at the same world
   // positions): the map to write out. A grid nothing touched stays whole.
   OccupancyGrid CroppedToKnown(int margin_cells) const;
+  // Makes this grid what it was when `part` was cropped from it
+  // (CroppedToKnown): the part's cells at their world positions, every other
+  // cell untouched, the part's frame count; the geometry stays this grid's,
+  // which must hold the part at whole-cell offsets with the same resolution
+  // (as a grid only grows: std::invalid_argument otherwise). A run keeps
+  // such parts of its map, a fraction of the grid, to make it again from.
+  void Restore(const OccupancyGrid& part);
   // How many cells any update ever touched.
   std::size_t KnownCellCount() const {
     return static_cast<std::size_t>(

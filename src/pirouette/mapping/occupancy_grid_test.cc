@@ -313,5 +313,37 @@ TEST(OccupancyGrid, CroppedToKnownKeepsCellsAndWorldPositions) {
   EXPECT_EQ(empty.CroppedToKnown(1).geometry(), empty.geometry());
 }
 
+TEST(OccupancyGrid, RestoreMakesTheGridWhatItWasWhenThePartWasCut) {
+  OccupancyGrid grid(core::GridGeometry(0.1, {-1.0, -2.0}, 30, 20));
+  grid.BeginFrame();
+  ASSERT_TRUE(grid.Apply({10, 5}, CellUpdate::kHit));
+  const OccupancyGrid part = grid.CroppedToKnown(0);
+  const OccupancyGrid before = grid;
+  // Later frames, and growth that moves the origin by whole cells.
+  grid.BeginFrame();
+  ASSERT_TRUE(grid.Apply({10, 5}, CellUpdate::kHit));
+  ASSERT_TRUE(grid.Apply({20, 15}, CellUpdate::kMiss));
+  grid.GrowToCover({-3.0, -4.0}, {3.0, 1.0});
+  ASSERT_NE(grid.geometry().origin(), before.geometry().origin());
+  grid.Restore(part);
+  EXPECT_EQ(grid.frame(), before.frame());
+  EXPECT_EQ(grid.KnownCellCount(), 1u);
+  for (int y = 0; y < before.geometry().height(); ++y) {
+    for (int x = 0; x < before.geometry().width(); ++x) {
+      const core::CellIndex c =
+          grid.geometry().CellOf(before.geometry().CellCentre(core::CellIndex{x, y}));
+      EXPECT_EQ(grid.LogOdds(c), before.LogOdds({x, y})) << x << "," << y;
+      EXPECT_EQ(grid.Known(c), before.Known({x, y})) << x << "," << y;
+    }
+  }
+  // A part that does not fit, or of another resolution, is refused.
+  const OccupancyGrid small(core::GridGeometry(0.1, {0.0, 0.0}, 3, 3));
+  OccupancyGrid elsewhere(core::GridGeometry(0.1, {5.0, 5.0}, 3, 3));
+  EXPECT_THROW(elsewhere.Restore(part), std::invalid_argument);
+  OccupancyGrid finer(core::GridGeometry(0.05, {-1.0, -2.0}, 60, 40));
+  EXPECT_THROW(finer.Restore(part), std::invalid_argument);
+  EXPECT_NO_THROW(OccupancyGrid(core::GridGeometry(0.1, {-1.0, -1.0}, 20, 20)).Restore(small));
+}
+
 }  // namespace
 }  // namespace pirouette::mapping

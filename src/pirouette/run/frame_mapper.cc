@@ -193,9 +193,10 @@ void FrameMapper::AddFrameToGraph(Seen& seen, const robot::Frame& frame) {
   }
   if (starts) {
     // The map before the stop (made again by Replay when a rebuild passes it).
-    snapshots_.push_back({graph_->StopOf(k), first_new, std::nullopt});
-    if (moved < 0) snapshots_.back().grid = grid_;
-    if (snapshots_.size() > kSnapshots) snapshots_.pop_front();
+    const int stop = graph_->StopOf(k);
+    snapshots_.push_back({stop, first_new, std::nullopt});
+    if (moved < 0) snapshots_.back().grid = grid_.CroppedToKnown(0);
+    ThinSnapshots(stop);
   }
   events_.emplace_back(MapEvent::Kind::kFrame, k);
   seen.pose = graph_->FramePose(k);
@@ -231,9 +232,17 @@ void FrameMapper::Replay(std::size_t from) {
   auto next = snapshots_.begin();
   for (std::size_t i = from; i < events_.size(); ++i) {
     while (next != snapshots_.end() && next->first_event < i) ++next;
-    if (next != snapshots_.end() && next->first_event == i) next->grid = grid_;
+    if (next != snapshots_.end() && next->first_event == i) next->grid = grid_.CroppedToKnown(0);
     Apply(events_[i]);
   }
+}
+
+void FrameMapper::ThinSnapshots(int stop) {
+  std::erase_if(snapshots_, [&](const StopSnapshot& s) {
+    const int back = stop - s.stop;
+    return back >= kRecentSnapshots && !(back < kNearSpan && s.stop % kNearStride == 0) &&
+           s.stop % kFarStride != 0;
+  });
 }
 
 void FrameMapper::Rebuild(int from_stop) {
@@ -245,7 +254,7 @@ void FrameMapper::Rebuild(int from_stop) {
     return s.stop <= from_stop && s.grid.has_value();
   });
   if (kept != snapshots_.rend()) {
-    grid_ = *kept->grid;
+    grid_.Restore(*kept->grid);
     Replay(kept->first_event);
   } else {
     grid_ = InitialGrid(start_, setup_);
