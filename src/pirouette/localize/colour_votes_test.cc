@@ -8,12 +8,10 @@ namespace {
 const core::GridGeometry kVotesGeometry(0.1, Eigen::Vector2d::Zero(), 10, 10);
 
 TEST(ColourVotesTest, CountsAsTheMapOfAllSightingsAtOnce) {
-  const std::vector<ColourSighting> s = {{{0.25, 0.25}, core::ColourClass::kHue0},
-                                         {{0.35, 0.25}, core::ColourClass::kHue8},
-                                         {{0.45, 0.25}, core::ColourClass::kHue8},
-                                         {{0.95, 0.95}, core::ColourClass::kWhite},
-                                         {{2.0, 0.5}, core::ColourClass::kWhite},
-                                         {{0.55, 0.55}, core::ColourClass::kNone}};
+  const std::vector<ColourSighting> s = {
+      {{0.25, 0.25}, core::ColourClass::kHue0}, {{0.35, 0.25}, core::ColourClass::kHue8},
+      {{0.45, 0.25}, core::ColourClass::kHue8}, {{0.95, 0.95}, core::ColourClass::kWhite},
+      {{2.0, 0.5}, core::ColourClass::kWhite},  {{0.55, 0.55}, core::ColourClass::kNone}};
   ColourVotes votes(kVotesGeometry);
   for (const ColourSighting& x : s) votes.Add(x);
   EXPECT_EQ(votes.Map().cells(), ColourMap::FromSightings(kVotesGeometry, s).cells());
@@ -33,7 +31,8 @@ TEST(ColourVotesTest, ACountStopsAtItsLargestValueWithoutWrappingRound) {
 
 TEST(ColourMapOnTest, ACropKeepsEachCellsClass) {
   const ColourMap map = ColourMap::FromSightings(
-      kVotesGeometry, {{{0.25, 0.25}, core::ColourClass::kHue0}, {{0.75, 0.75}, core::ColourClass::kHue5}});
+      kVotesGeometry,
+      {{{0.25, 0.25}, core::ColourClass::kHue0}, {{0.75, 0.75}, core::ColourClass::kHue5}});
   // Cells (1..6, 1..6) of the map, and one column past its right edge.
   const core::GridGeometry crop(0.1, Eigen::Vector2d(0.1, 0.1), 6, 6);
   const ColourMap cropped = map.On(crop);
