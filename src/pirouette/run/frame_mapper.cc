@@ -387,8 +387,7 @@ void FrameMapper::ConfirmBlocking(const core::ObstacleProfile& profile,
     confirm.frame = frame_profiles_.size() - 1;
     confirm.leg_m = leg_m;
     events_.push_back(confirm);
-    // As a rebuild will put it in again: from the frame's packed profile.
-    Confirm(frame_profiles_.back().Unpack(), map_T_robot, leg_m);
+    Apply(events_.back());  // as a rebuild puts it in again (the frame is the last one mapped)
     return;
   }
   Confirm(profile, map_T_robot, leg_m);
