@@ -113,11 +113,16 @@ const std::vector<Frame>& Frames() {
   return frames;
 }
 
-void UpdatePirouette(benchmark::State& state) {
+// With solid walls (the default) or without (solid_baseline_m 0: no ray is
+// ever stopped, and the walk that looks for solid cells is skipped): what
+// that walk costs.
+void UpdatePirouette(benchmark::State& state, bool solid) {
   const auto& frames = Frames();
+  pirouette::mapping::OccupancyOptions options;
+  if (!solid) options.solid_baseline_m = 0.0;
   // The floor and the 0.4 m the robot sees past its edges: no growth.
   pirouette::mapping::OccupancyGrid grid(
-      pirouette::core::GridGeometry::Covering(kCell, {-0.5, -0.5}, {5.0, 5.0}));
+      pirouette::core::GridGeometry::Covering(kCell, {-0.5, -0.5}, {5.0, 5.0}), options);
   std::int64_t updates = 0;
   for (auto _ : state) {
     for (const Frame& frame : frames) {
@@ -200,5 +205,10 @@ void UpdateOctomap(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(UpdatePirouette)->Name("update/pirouette")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(UpdatePirouette, solid, true)
+    ->Name("update/pirouette")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(UpdatePirouette, no_solid, false)
+    ->Name("update/pirouette-without-solid-walls")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(UpdateOctomap)->Name("update/octomap")->Unit(benchmark::kMillisecond);

@@ -192,12 +192,14 @@ TEST(LocalizationLoopTest, TheMapFollowsTheGraphAsIfMadeAgainFromNothing) {
 
 // Under odometry error the robot can end a move touching a wall it mapped a
 // few centimetres off, beside its front: every move that way then stops at
-// once. In this run (the maze, seed 3, 5% noise) that happens 40 times in a
-// row unless the explorer backs off such a contact; it does, and the run
-// completes.
+// once, and without backing off such a contact a run was seen to repeat it
+// 40 times in a row. In this run (the maze, seed 1, 5% noise) the explorer
+// backs off such contacts twice, and the run completes. (Seed 3 was this
+// run until walls hit from two places stopped rays; most seeds of 1-14
+// back off at least once, and all complete.)
 TEST(LocalizationLoopTest, ARobotStuckAgainstAWallBacksOffAndGoesOn) {
   const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/maze.yaml");
-  const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.05, 3);
+  const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.05, 1);
   EXPECT_EQ(result.status, "complete") << result.reason;
   EXPECT_GT(result.contact_backoffs, 0);
 }

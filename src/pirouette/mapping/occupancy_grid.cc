@@ -48,6 +48,9 @@ void OccupancyOptions::Check() const {
     Refuse("clamp_max_probability", "must be above the occupied threshold 0.65",
            clamp_max_probability);
   }
+  if (!(std::isfinite(solid_baseline_m) && solid_baseline_m >= 0.0 && solid_baseline_m < 1e3)) {
+    Refuse("solid_baseline_m", "must be finite, >= 0 and under 1 km", solid_baseline_m);
+  }
 }
 
 double ProbabilityToLogOdds(double probability) {
@@ -69,6 +72,29 @@ OccupancyGrid::OccupancyGrid(core::GridGeometry geometry, OccupancyOptions optio
       cells_(geometry_.CellCount()) {
   blind_cap_ = std::min(blind_, clamp_max_);
   one_hit_ = std::min(hit_, clamp_max_);
+  const double quanta = options_.solid_baseline_m / kPlaceQuantumM;
+  baseline_quanta_squared_ = std::max(1, static_cast<int>(std::ceil(quanta * quanta)));
+  FlagBlocks();
+}
+
+void OccupancyGrid::FlagBlocks() {
+  const int k = kSolidBlockCells;
+  solid_blocks_width_ = (geometry_.width() + k - 1) / k;
+  const int blocks_height = (geometry_.height() + k - 1) / k;
+  solid_blocks_.assign(
+      static_cast<std::size_t>(solid_blocks_width_) * static_cast<std::size_t>(blocks_height), 0);
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    if (cells_[i].seen_from == kTwoPlaces) FlagBlockOf(i);
+  }
+}
+
+std::uint32_t OccupancyGrid::EncodePlace(const Eigen::Vector2d& viewpoint) {
+  const auto code = [](double metres) {
+    constexpr double kLimit = 32766.0;
+    const double q = std::clamp(std::round(metres / kPlaceQuantumM), -kLimit, kLimit);
+    return static_cast<std::uint32_t>(static_cast<int>(q) + 32768);
+  };
+  return (code(viewpoint.x()) << 16U) | code(viewpoint.y());
 }
 
 double OccupancyGrid::Probability(const core::CellIndex& c) const {
@@ -94,7 +120,13 @@ TrinaryMap OccupancyGrid::ToExploredMap() const {
   return map;
 }
 
+void OccupancyGrid::BeginFrame(const Eigen::Vector2d& viewpoint) {
+  BeginFrame();
+  if (options_.solid_baseline_m > 0.0 && viewpoint.allFinite()) viewpoint_ = EncodePlace(viewpoint);
+}
+
 void OccupancyGrid::BeginFrame() {
+  viewpoint_ = kNoPlace;
   if (++frame_ == 0) {
     // After 2^32 frames the stamps wrap: keep "touched" (1) and start again.
     for (Cell& cell : cells_) cell.stamp = cell.stamp == 0 ? 0 : 1;
@@ -175,6 +207,7 @@ void OccupancyGrid::GrowToCover(const Eigen::Vector2d& lo, const Eigen::Vector2d
   }
   geometry_ = grown;
   cells_ = std::move(cells);
+  FlagBlocks();  // the origin moved by whole cells, not whole blocks
 }
 
 OccupancyGrid OccupancyGrid::CroppedToKnown(int margin_cells) const {
@@ -206,6 +239,7 @@ OccupancyGrid OccupancyGrid::CroppedToKnown(int margin_cells) const {
       cropped.cells_[cropped.geometry_.Flat({x - x0, y - y0})] = cells_[geometry_.Flat({x, y})];
     }
   }
+  cropped.FlagBlocks();
   return cropped;
 }
 
@@ -228,6 +262,7 @@ void OccupancyGrid::Restore(const OccupancyGrid& part) {
               cells_.begin() + static_cast<std::ptrdiff_t>(geometry_.Flat({x0, y0 + y})));
   }
   frame_ = part.frame_;
+  FlagBlocks();
 }
 
 }  // namespace pirouette::mapping

@@ -31,11 +31,19 @@ struct OccupancyOptions {
   double blind_probability = 0.6;
   double clamp_min_probability = 0.12;  // log-odds never go below this one's (OctoMap)
   double clamp_max_probability = 0.97;  // nor above this one's
+  // A cell is solid (OccupancyGrid::Solid) once it sits at the clamp above
+  // and hits reached it from two viewpoints at least this far apart
+  // (metres); 0 turns solidity off. A phantom hit (a vertical edge cutting a
+  // column of a tilted camera's picture, a wall a few centimetres off taken
+  // for the floor) repeats from one place but lands elsewhere from another;
+  // a wall's face is hit wherever it is seen from. Two stops of a robot of
+  // the paper's size are about this far apart at the least.
+  double solid_baseline_m = 0.15;
 
   // Throws std::invalid_argument naming the field unless every probability is
   // in (0, 1), miss < 0.5 < hit, blind > 0.5, clamp_min < kFreeThreshold and
   // clamp_max > kOccupiedThreshold (else no cell could ever read free or
-  // occupied).
+  // occupied), and solid_baseline_m is finite and >= 0.
   void Check() const;
 };
 
@@ -130,6 +138,27 @@ class OccupancyGrid {
     return cell.stamp != 0 && cell.log_odds > 0.0F &&
            (cell.log_odds == blind_cap_ || cell.log_odds <= one_hit_);
   }
+  // Whether the cell is a wall seen for sure: at the log-odds clamp above
+  // and hit from two viewpoints at least OccupancyOptions::solid_baseline_m
+  // apart (BeginFrame(viewpoint)). The sensor model does not see through a
+  // solid cell (InsertProfile). False off the grid and with solidity off.
+  bool Solid(const core::CellIndex& c) const {
+    return geometry_.Contains(c) && SolidAt(geometry_.Flat(c));
+  }
+  // The same for the row-major index `flat` < geometry().CellCount(), unchecked.
+  bool SolidAt(std::size_t flat) const {
+    const Cell& cell = cells_[flat];
+    return cell.seen_from == kTwoPlaces && cell.log_odds >= clamp_max_;
+  }
+  // Blocks of kSolidBlockCells × kSolidBlockCells cells, block (bx, by)
+  // holding cells [k·bx, k·bx + k) × [k·by, k·by + k): a block that holds a
+  // solid cell is flagged (a flagged one may hold none: a cell hit from two
+  // places that misses have pulled off the clamp). A ray can skip the blocks
+  // not flagged without looking at their cells.
+  static constexpr int kSolidBlockCells = 4;
+  int solid_blocks_width() const { return solid_blocks_width_; }
+  // Whether row-major block `flat_block` may hold a solid cell (unchecked).
+  bool SolidBlockAt(std::size_t flat_block) const { return solid_blocks_[flat_block] != 0; }
   // The whole grid by State(), on the same geometry.
   TrinaryMap ToTrinary() const;
   // The grid as an explorer reads it: unknown is only what no update ever
@@ -171,8 +200,11 @@ class OccupancyGrid {
   int max_side_cells() const { return max_side_cells_; }
 
   // Starts a new frame: from now on each cell takes at most one update until
-  // the next call.
+  // the next call. Its hits count toward solidity (Solid) with the viewpoint
+  // they were seen from (world metres); hits of a frame begun without one
+  // (a confirmation, a test) do not.
   void BeginFrame();
+  void BeginFrame(const Eigen::Vector2d& viewpoint);
   // The number of frames begun so far.
   std::uint32_t frame() const { return frame_; }
 
@@ -191,6 +223,14 @@ class OccupancyGrid {
     switch (update) {
       case CellUpdate::kHit:
         cell.log_odds = std::min(cell.log_odds + hit_, clamp_max_);
+        if (viewpoint_ != kNoPlace && cell.seen_from != kTwoPlaces) {
+          if (cell.seen_from == kNoPlace) {
+            cell.seen_from = viewpoint_;
+          } else if (FarApart(cell.seen_from, viewpoint_)) {
+            cell.seen_from = kTwoPlaces;
+            FlagBlockOf(flat);
+          }
+        }
         break;
       case CellUpdate::kMiss:
         cell.log_odds = std::max(cell.log_odds + miss_, clamp_min_);
@@ -212,7 +252,29 @@ class OccupancyGrid {
   struct Cell {
     float log_odds = 0.0F;
     std::uint32_t stamp = 0;  // the frame of the last update; 0: never touched
+    // Where the first hit was seen from (a viewpoint code, see EncodePlace),
+    // kNoPlace before any, kTwoPlaces once a hit came from far enough away.
+    std::uint32_t seen_from = kNoPlace;
   };
+  // A viewpoint rounded to kPlaceQuantumM on each axis, 16 bits each
+  // (clamped to ±32,766 quanta: ±1.6 km), never either marker.
+  static constexpr std::uint32_t kNoPlace = 0;
+  static constexpr std::uint32_t kTwoPlaces = 0xFFFFFFFFU;
+  static constexpr double kPlaceQuantumM = 0.05;
+  static std::uint32_t EncodePlace(const Eigen::Vector2d& viewpoint);
+  void FlagBlockOf(std::size_t flat) {
+    const auto width = static_cast<std::size_t>(geometry_.width());
+    const auto k = static_cast<std::size_t>(kSolidBlockCells);
+    solid_blocks_[(flat / width / k) * static_cast<std::size_t>(solid_blocks_width_) +
+                  (flat % width) / k] = 1;
+  }
+  // Sizes the blocks to the geometry and flags them from the cells.
+  void FlagBlocks();
+  bool FarApart(std::uint32_t a, std::uint32_t b) const {
+    const int dx = static_cast<int>(a >> 16U) - static_cast<int>(b >> 16U);
+    const int dy = static_cast<int>(a & 0xFFFFU) - static_cast<int>(b & 0xFFFFU);
+    return dx * dx + dy * dy >= baseline_quanta_squared_;
+  }
 
   CellState StateOf(const Cell& cell) const {
     if (cell.stamp == 0) return CellState::kUnknown;
@@ -232,10 +294,14 @@ class OccupancyGrid {
   float one_hit_;    // min(logit(hit), clamp max): one hit on an untouched cell
   float clamp_min_;
   float clamp_max_;
-  float occupied_above_;  // logit(kOccupiedThreshold)
-  float free_below_;      // logit(kFreeThreshold)
+  float occupied_above_;                // logit(kOccupiedThreshold)
+  float free_below_;                    // logit(kFreeThreshold)
+  int baseline_quanta_squared_;         // solid_baseline_m² in kPlaceQuantumM², at least 1
+  std::uint32_t viewpoint_ = kNoPlace;  // the frame's, or kNoPlace
   std::uint32_t frame_ = 1;
   std::vector<Cell> cells_;  // row-major, geometry_.CellCount()
+  int solid_blocks_width_ = 0;
+  std::vector<std::uint8_t> solid_blocks_;  // row-major, 1: flagged
 };
 
 }  // namespace pirouette::mapping

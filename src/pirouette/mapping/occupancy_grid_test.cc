@@ -64,6 +64,12 @@ TEST(OccupancyOptions, RefusalsNameTheField) {
   o = {};
   o.clamp_max_probability = 1.0;
   EXPECT_NE(Refusal(o).find("clamp_max_probability"), std::string::npos);
+  o = {};
+  o.solid_baseline_m = -0.1;
+  EXPECT_NE(Refusal(o).find("solid_baseline_m"), std::string::npos);
+  o.solid_baseline_m = nan;
+  EXPECT_NE(Refusal(o).find("solid_baseline_m"), std::string::npos);
+  o.clamp_max_probability = 1.0;
   EXPECT_THROW(OccupancyGrid(GridGeometry(0.01, {0, 0}, 2, 2), o), std::invalid_argument);
 }
 
@@ -343,6 +349,73 @@ TEST(OccupancyGrid, RestoreMakesTheGridWhatItWasWhenThePartWasCut) {
   OccupancyGrid finer(core::GridGeometry(0.05, {-1.0, -2.0}, 60, 40));
   EXPECT_THROW(finer.Restore(part), std::invalid_argument);
   EXPECT_NO_THROW(OccupancyGrid(core::GridGeometry(0.1, {-1.0, -1.0}, 20, 20)).Restore(small));
+}
+
+// Hits `c` in `frames` frames of their own, seen from `viewpoint`.
+void HitFrom(OccupancyGrid& grid, const CellIndex& c, const Eigen::Vector2d& viewpoint,
+             int frames) {
+  for (int i = 0; i < frames; ++i) {
+    grid.BeginFrame(viewpoint);
+    ASSERT_TRUE(grid.Apply(c, CellUpdate::kHit));
+  }
+}
+
+TEST(OccupancyGrid, SolidIsAtTheClampAndHitFromTwoPlaces) {
+  const CellIndex c{4, 4};
+  // From one place, however often: not solid (a phantom repeats from one place).
+  OccupancyGrid one = SmallGrid();
+  HitFrom(one, c, {0.0, 0.0}, 20);
+  EXPECT_NEAR(one.Probability(c), 0.97, 1e-6);
+  EXPECT_FALSE(one.Solid(c));
+  // From a second place nearer than the baseline (0.15 m): still not.
+  HitFrom(one, c, {0.1, 0.0}, 1);
+  EXPECT_FALSE(one.Solid(c));
+  // From one far enough: solid, as long as it stays at the clamp.
+  HitFrom(one, c, {0.0, 0.2}, 1);
+  EXPECT_TRUE(one.Solid(c));
+  Repeat(one, c, CellUpdate::kMiss, 1);
+  EXPECT_FALSE(one.Solid(c));
+  HitFrom(one, c, {0.0, 0.0}, 1);  // back at the clamp, from anywhere
+  EXPECT_TRUE(one.Solid(c));
+  // Two places but below the clamp: not yet.
+  OccupancyGrid two = SmallGrid();
+  HitFrom(two, c, {0.0, 0.0}, 1);
+  HitFrom(two, c, {1.0, 0.0}, 1);
+  EXPECT_FALSE(two.Solid(c));
+  HitFrom(two, c, {1.0, 0.0}, 3);
+  EXPECT_TRUE(two.Solid(c));
+  // Hits of frames begun without a viewpoint never count.
+  OccupancyGrid none = SmallGrid();
+  Repeat(none, c, CellUpdate::kHit, 10);
+  HitFrom(none, c, {1.0, 0.0}, 1);
+  EXPECT_FALSE(none.Solid(c));
+  // Solidity off.
+  OccupancyOptions off;
+  off.solid_baseline_m = 0.0;
+  OccupancyGrid never(GridGeometry(0.01, {-0.05, -0.05}, 10, 10), off);
+  HitFrom(never, c, {0.0, 0.0}, 5);
+  HitFrom(never, c, {1.0, 0.0}, 5);
+  EXPECT_FALSE(never.Solid(c));
+  EXPECT_FALSE(never.Solid({40, 40}));  // off the grid
+  // Kept through growth, a crop and a restore, its block flagged in each.
+  const auto flagged = [](const OccupancyGrid& g, const CellIndex& cell) {
+    const int k = OccupancyGrid::kSolidBlockCells;
+    const int block = (cell.y / k) * g.solid_blocks_width() + cell.x / k;
+    return g.SolidBlockAt(static_cast<std::size_t>(block));
+  };
+  EXPECT_TRUE(flagged(two, c));
+  EXPECT_FALSE(flagged(two, {9, 9}));
+  two.GrowToCover({-2.03, -2.01}, {2.0, 2.0});
+  const Eigen::Vector2d centre = SmallGrid().geometry().CellCentre(c);
+  const CellIndex grown = two.geometry().CellOf(centre);
+  EXPECT_TRUE(two.Solid(grown));
+  EXPECT_TRUE(flagged(two, grown));
+  const OccupancyGrid part = two.CroppedToKnown(0);
+  EXPECT_TRUE(part.Solid(part.geometry().CellOf(centre)));
+  EXPECT_TRUE(flagged(part, part.geometry().CellOf(centre)));
+  two.GrowToCover({-3.0, -3.0}, {3.0, 3.0});
+  two.Restore(part);
+  EXPECT_TRUE(flagged(two, two.geometry().CellOf(centre)));
 }
 
 }  // namespace

@@ -27,22 +27,27 @@ struct Ray {
   // when its end cell was updated too (by the ray or as a hit), else 1.5
   // cells (more than a cell's diagonal) short of it.
   double Covered() const { return include_end || end_hit ? length : length - 1.5; }
+
+  // How far (cells) from the robot the ray was checked free of solid cells
+  // (StopAtSolidCells): every cell it enters nearer than this is not solid.
+  double checked = 0.0;
 };
 
 double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() * b.y() - a.y() * b.x();
 }
 
-// Applies kUpdate to every cell the segment from `from` to `to` (cell units)
-// passes through, in order, the end cell only when include_end: an exact grid
+// Visits every cell the segment from `from` to `to` (cell units) passes
+// through, in order, the end cell only when include_end: an exact grid
 // traversal (Amanatides & Woo 1987, "A Fast Voxel Traversal Algorithm for Ray
 // Tracing"), 4-connected. Both ends lie on the grid, so every cell between
 // does too. The number of steps is fixed by the end cells, so rounding can
-// never carry the walk past its end. Returns the number of updates applied.
-template <CellUpdate kUpdate>
-std::size_t WalkSegment(OccupancyGrid& grid, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
-                        bool include_end) {
-  const std::ptrdiff_t width = grid.geometry().width();
+// never carry the walk past its end. visit(flat index, t) gets where the
+// segment enters the cell (t in [0, 1] along it, 0 for the first) and
+// returns whether to go on.
+template <class Visit>
+void Traverse(std::ptrdiff_t width, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+              bool include_end, Visit&& visit) {
   const int x0 = static_cast<int>(std::floor(from.x()));
   const int y0 = static_cast<int>(std::floor(from.y()));
   int steps_x = std::abs(static_cast<int>(std::floor(to.x())) - x0);
@@ -59,18 +64,32 @@ std::size_t WalkSegment(OccupancyGrid& grid, const Eigen::Vector2d& from, const 
   const std::ptrdiff_t step_y = d.y() > 0 ? width : -width;
 
   auto index = static_cast<std::ptrdiff_t>(y0) * width + x0;
-  std::size_t applied = 0;
+  double t = 0.0;
   for (int n = steps_x + steps_y; n > 0; --n) {
-    applied += grid.ApplyAt(static_cast<std::size_t>(index), kUpdate) ? 1 : 0;
+    if (!visit(static_cast<std::size_t>(index), t)) return;
     if (next_x < next_y) {
       index += step_x;
+      t = next_x;
       next_x = --steps_x > 0 ? next_x + delta_x : kNever;
     } else {
       index += step_y;
+      t = next_y;
       next_y = --steps_y > 0 ? next_y + delta_y : kNever;
     }
   }
-  if (include_end) applied += grid.ApplyAt(static_cast<std::size_t>(index), kUpdate) ? 1 : 0;
+  if (include_end) visit(static_cast<std::size_t>(index), t);
+}
+
+// Applies kUpdate to every cell the segment from `from` to `to` (cell units)
+// passes through (Traverse). Returns the number of updates applied.
+template <CellUpdate kUpdate>
+std::size_t WalkSegment(OccupancyGrid& grid, const Eigen::Vector2d& from, const Eigen::Vector2d& to,
+                        bool include_end) {
+  std::size_t applied = 0;
+  Traverse(grid.geometry().width(), from, to, include_end, [&](std::size_t flat, double) {
+    applied += grid.ApplyAt(flat, kUpdate) ? 1 : 0;
+    return true;
+  });
   return applied;
 }
 
@@ -81,7 +100,9 @@ std::size_t WalkSegment(OccupancyGrid& grid, const Eigen::Vector2d& from, const 
 // the wedge between them, which it cannot while the wedge is narrower than a
 // cell there: 2·(D + √2)·sin(α/2) = (D + √2)·|lo.direction − hi.direction| < 1.
 // So m's walk may start at D where that holds and lo and hi reach D + √2.
-double SkipDistance(const Ray& lo, const Ray& m, const Ray& hi) {
+// lo_reach and hi_reach are how far along lo and hi that holds (their
+// Covered() for a walk).
+double SkipDistance(const Ray& lo, const Ray& m, const Ray& hi, double lo_reach, double hi_reach) {
   const Eigen::Vector2d& a = lo.direction;
   const Eigen::Vector2d& b = hi.direction;
   const Eigen::Vector2d& d = m.direction;
@@ -89,9 +110,9 @@ double SkipDistance(const Ray& lo, const Ray& m, const Ray& hi) {
   const double ad = Cross(a, d);
   const double db = Cross(d, b);
   if (Cross(a, b) >= 0.0 ? (ad < 0.0 || db < 0.0) : (ad > 0.0 || db > 0.0)) return 0.0;
-  // reach = min(lo.Covered(), hi.Covered(), 0.99 / chord), without the
-  // square root and division where the wedge is narrow enough.
-  double reach = std::min(lo.Covered(), hi.Covered());
+  // reach = min(lo_reach, hi_reach, 0.99 / chord), without the square root
+  // and division where the wedge is narrow enough.
+  double reach = std::min(lo_reach, hi_reach);
   const double chord_squared = (a - b).squaredNorm();
   if (chord_squared * reach * reach > 0.99 * 0.99) {
     reach = std::min(reach, 0.99 / std::sqrt(chord_squared));
@@ -119,7 +140,9 @@ std::size_t WalkBetween(OccupancyGrid& grid, const Eigen::Vector2d& from,
                         const std::vector<Ray>& rays, std::size_t lo, std::size_t hi) {
   if (hi - lo < 2) return 0;
   const std::size_t m = lo + (hi - lo) / 2;
-  return WalkRay<kUpdate>(grid, from, rays[m], SkipDistance(rays[lo], rays[m], rays[hi])) +
+  const double skip =
+      SkipDistance(rays[lo], rays[m], rays[hi], rays[lo].Covered(), rays[hi].Covered());
+  return WalkRay<kUpdate>(grid, from, rays[m], skip) +
          WalkBetween<kUpdate>(grid, from, rays, lo, m) +
          WalkBetween<kUpdate>(grid, from, rays, m, hi);
 }
@@ -246,22 +269,112 @@ CellIndex CellOfCells(const Eigen::Vector2d& p_cells) {
                    static_cast<int>(std::floor(p_cells.y()))};
 }
 
-// Turns the rays into cell units and applies the hit pass (each hit ray's end
-// cell); returns the cells it updated.
-std::size_t ToCellsAndApplyHits(OccupancyGrid& grid, FrameRays& rays) {
+// A ray that meets a solid cell (OccupancyGrid::Solid) more than this many
+// cells short of its end stops there: the reading saw through a wall seen for
+// sure, so it is taken for a wall passing as floor and says nothing of the
+// wall or beyond. Within it, the reading is of the wall itself (a range a
+// cell or two short or long).
+constexpr double kSolidStopMarginCells = 3.0;
+
+// Checks ray r for solid cells from `skip` cells out to where a solid cell
+// no longer stops it (kSolidStopMarginCells short of its end): returns where
+// it enters the first (cells from the robot), or -1, and sets r.checked.
+double CheckRay(const OccupancyGrid& grid, const Eigen::Vector2d& from, Ray& r, double skip) {
+  const double limit = r.length - kSolidStopMarginCells;
+  r.checked = std::max(skip, limit);
+  if (skip >= limit) return -1.0;
+  // From the point at `skip`: the cell holding it is one r passes within
+  // `skip` of the robot, so (SkipDistance) it was checked already and is not
+  // solid; every cell after it is entered at a true crossing. Over blocks
+  // first, to the first flagged one; then cell by cell from where the ray
+  // enters it (a block's edge is a cell's edge).
+  const Eigen::Vector2d start = from + skip * r.direction;
+  const Eigen::Vector2d end = from + limit * r.direction;
+  constexpr double kBlock = OccupancyGrid::kSolidBlockCells;
+  double flagged = -1.0;  // where the ray enters the first flagged block, along start→end
+  Traverse(grid.solid_blocks_width(), start / kBlock, end / kBlock, true,
+           [&](std::size_t flat_block, double t) {
+             if (!grid.SolidBlockAt(flat_block)) return true;
+             flagged = t;
+             return false;
+           });
+  if (flagged < 0.0) return -1.0;
+  const double fine_skip = skip + flagged * (limit - skip);
+  const double span = limit - fine_skip;
+  double stop = -1.0;
+  // Up to the cell holding the point at `limit`, entered before it.
+  Traverse(grid.geometry().width(), start + flagged * (end - start), end, true,
+           [&](std::size_t flat, double t) {
+             if (!grid.SolidAt(flat)) return true;
+             stop = fine_skip + t * span;
+             return false;
+           });
+  if (stop >= 0.0) r.checked = stop;
+  return stop;
+}
+
+// Checks rays[lo + 1 .. hi - 1] as WalkBetween walks them, each middle one
+// only beyond where the two around it were checked; records each stop.
+void CheckBetween(const OccupancyGrid& grid, const Eigen::Vector2d& from, std::vector<Ray>& rays,
+                  std::vector<double>& stops, std::size_t lo, std::size_t hi) {
+  if (hi - lo < 2) return;
+  const std::size_t m = lo + (hi - lo) / 2;
+  const double skip = SkipDistance(rays[lo], rays[m], rays[hi], rays[lo].checked, rays[hi].checked);
+  stops[m] = CheckRay(grid, from, rays[m], skip);
+  CheckBetween(grid, from, rays, stops, lo, m);
+  CheckBetween(grid, from, rays, stops, m, hi);
+}
+
+// Shortens each miss ray that passes through a solid cell more than
+// kSolidStopMarginCells short of its end to end just before that cell, no
+// hit at its end; returns how many it shortened. Rays are in cell units.
+// The search skips, as the walk does, what the neighbouring rays covered.
+std::size_t StopAtSolidCells(const OccupancyGrid& grid, const Eigen::Vector2d& from,
+                             std::vector<Ray>& rays) {
+  if (!(grid.options().solid_baseline_m > 0.0) || rays.empty()) return 0;  // none is ever solid
+  std::vector<double> stops(rays.size(), -1.0);
+  stops.front() = CheckRay(grid, from, rays.front(), 0.0);
+  if (rays.size() > 1) {
+    stops.back() = CheckRay(grid, from, rays.back(), 0.0);
+    CheckBetween(grid, from, rays, stops, 0, rays.size() - 1);
+  }
+  std::size_t stopped = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    if (stops[i] < 0.0) continue;
+    ++stopped;
+    // The cell before the solid one is the last the ray passes through.
+    constexpr double kJustShort = 1e-6;
+    Ray& r = rays[i];
+    r.length = std::max(0.0, stops[i] - kJustShort);
+    r.end = from + r.length * r.direction;
+    r.end_hit = false;
+    r.include_end = r.length > 0.0;
+  }
+  return stopped;
+}
+
+// Turns the rays into cell units.
+void ToCells(const OccupancyGrid& grid, FrameRays& rays) {
   const core::GridGeometry& geometry = grid.geometry();
   const double resolution = geometry.resolution();
-  std::size_t applied = 0;
   for (auto* pass : {&rays.blind, &rays.miss}) {
     for (Ray& r : *pass) {
       r.end = (r.end - geometry.origin()) / resolution;
       r.length /= resolution;
-      const CellIndex end = CellOfCells(r.end);
-      if (!geometry.Contains(end)) {
+      if (!geometry.Contains(CellOfCells(r.end))) {
         throw std::logic_error("InsertProfile: a ray ends off the grown grid");
       }
-      if (r.end_hit) applied += grid.ApplyAt(geometry.Flat(end), CellUpdate::kHit) ? 1 : 0;
     }
+  }
+}
+
+// The hit pass: each hit ray's end cell. Returns the cells it updated.
+std::size_t ApplyHits(OccupancyGrid& grid, const std::vector<Ray>& rays) {
+  const core::GridGeometry& geometry = grid.geometry();
+  std::size_t applied = 0;
+  for (const Ray& r : rays) {
+    if (!r.end_hit) continue;
+    applied += grid.ApplyAt(geometry.Flat(CellOfCells(r.end)), CellUpdate::kHit) ? 1 : 0;
   }
   return applied;
 }
@@ -273,14 +386,16 @@ std::size_t InsertProfile(OccupancyGrid& grid, const core::ObstacleProfile& prof
   for (const auto& reading : profile.readings) CheckReading(reading);
   FrameRays rays = RaysOf(profile.readings, world_T_robot, grid.geometry().resolution());
   GrowToHold(grid, world_T_robot.translation(), rays);
-  grid.BeginFrame();
+  grid.BeginFrame(world_T_robot.translation());
   const core::GridGeometry& geometry = grid.geometry();
   const Eigen::Vector2d from =
       (world_T_robot.translation() - geometry.origin()) / geometry.resolution();
   if (!geometry.Contains(CellOfCells(from))) {
     throw std::logic_error("InsertProfile: the robot is off the grown grid");
   }
-  std::size_t applied = ToCellsAndApplyHits(grid, rays);
+  ToCells(grid, rays);
+  StopAtSolidCells(grid, from, rays.miss);
+  std::size_t applied = ApplyHits(grid, rays.miss);
   applied += WalkPass<CellUpdate::kBlind>(grid, from, rays.blind);
   applied += WalkPass<CellUpdate::kMiss>(grid, from, rays.miss);
   return applied;

@@ -27,8 +27,16 @@ inline constexpr double kMaxFillGapRad = core::DegToRad(5.0);
 //   kClear: every cell out to the range (the maximum range) takes a miss;
 //   kBlind: every cell out to the range takes the blind update (the base of
 //           whatever fills the view is somewhere in there, unseen).
+// A hit or clear reading whose ray passes through a solid cell
+// (OccupancyGrid::Solid: a wall hit from two places) more than three cells
+// short of its end stops just before it: no miss on the wall or beyond, and
+// no hit at its end. A reading that runs on through a wall seen for sure is
+// a wall passing for the floor (a face of the floor's colour, seen too near
+// to tell), and would map a fan of free cells beyond it. Whether a cell is
+// solid is as the grid stood before the frame.
 // The grid grows to cover the frame first, and the call is one frame of the
-// grid (OccupancyGrid::BeginFrame): each cell changes at most once. Hits go
+// grid (OccupancyGrid::BeginFrame, from the robot's position): each cell
+// changes at most once. Hits go
 // first, then blind areas, then misses, so a hit wins over both, and blind
 // wins over a miss (the cautious reading: something may stand there).
 // Where two consecutive readings, neither blind, are at most kMaxFillGapRad

@@ -40,6 +40,11 @@ CellIndex At(const OccupancyGrid& grid, double x, double y) {
   return c.value_or(CellIndex{});
 }
 
+// The cell holding a point given in cell units (as the sensor model floors it).
+CellIndex CellOfCellUnits(const GridGeometry& /*g*/, const Eigen::Vector2d& q) {
+  return {static_cast<int>(std::floor(q.x())), static_cast<int>(std::floor(q.y()))};
+}
+
 // Robot at a cell centre facing +y; bearing 0 is therefore +y.
 const Pose2 kFacingNorth(0.005, 0.005, std::numbers::pi / 2);
 
@@ -267,6 +272,28 @@ TEST(InsertProfile, FillStopsShortOfHitsAndSkipsBlindAreas) {
   EXPECT_FALSE(grid.Known(At(grid, unfilled.x(), unfilled.y())));
 }
 
+// Where the segment p→q (cell units) enters cell (x, y), as a fraction of
+// the segment, when it passes through the cell (its clip against the cell's
+// square, Liang–Barsky, has positive length); -1 when it does not.
+double Entry(const Eigen::Vector2d& p, const Eigen::Vector2d& q, int x, int y) {
+  double t0 = 0.0;
+  double t1 = 1.0;
+  const Eigen::Vector2d d = q - p;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double lo = axis == 0 ? x : y;
+    if (d[axis] == 0.0) {
+      if (p[axis] <= lo || p[axis] >= lo + 1.0) return -1.0;
+      continue;
+    }
+    double a = (lo - p[axis]) / d[axis];
+    double b = (lo + 1.0 - p[axis]) / d[axis];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return t1 - t0 > 1e-9 ? t0 : -1.0;
+}
+
 // The ideal model computed cell by cell, independently of InsertProfile's
 // traversal: a segment passes through a cell when its clip against the cell's
 // square (Liang–Barsky) has positive length. Returns the probability every
@@ -274,22 +301,7 @@ TEST(InsertProfile, FillStopsShortOfHitsAndSkipsBlindAreas) {
 std::vector<double> IdealFrame(const GridGeometry& g, const ObstacleProfile& profile,
                                const Pose2& pose) {
   const auto crosses = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, int x, int y) {
-    double t0 = 0.0;
-    double t1 = 1.0;
-    const Eigen::Vector2d d = q - p;
-    for (int axis = 0; axis < 2; ++axis) {
-      const double lo = axis == 0 ? x : y;
-      if (d[axis] == 0.0) {
-        if (p[axis] <= lo || p[axis] >= lo + 1.0) return false;
-        continue;
-      }
-      double a = (lo - p[axis]) / d[axis];
-      double b = (lo + 1.0 - p[axis]) / d[axis];
-      if (a > b) std::swap(a, b);
-      t0 = std::max(t0, a);
-      t1 = std::min(t1, b);
-    }
-    return t1 - t0 > 1e-9;
+    return Entry(p, q, x, y) >= 0.0;
   };
   enum Mark { kNone, kMiss, kBlind, kHit };
   std::vector<Mark> marks(g.CellCount(), kNone);
@@ -327,6 +339,33 @@ std::vector<double> IdealFrame(const GridGeometry& g, const ObstacleProfile& pro
   return probabilities;
 }
 
+// A frame like the paper's camera's: `columns` readings over `field_deg`,
+// runs of hits at changing ranges, clear runs out to max_range and blind
+// patches, drawn by uniform(lo, hi).
+template <class Uniform>
+ObstacleProfile RandomFrame(Uniform& uniform, int columns, double field_deg, double max_range) {
+  ObstacleProfile profile{{}, max_range};
+  int column = 0;
+  while (column < columns) {
+    const int run = 5 + static_cast<int>(uniform(0.0, 60.0));
+    const double kind = uniform(0.0, 1.0);
+    const double near = uniform(0.05, max_range);
+    const double slope = uniform(-0.004, 0.004);
+    for (int i = 0; i < run && column < columns; ++i, ++column) {
+      const double bearing = DegToRad(field_deg / 2 - field_deg * (column + 0.5) / columns);
+      if (kind < 0.55) {
+        profile.readings.push_back(
+            {bearing, std::clamp(near + slope * i, 0.02, max_range - 0.001), ReadingKind::kHit});
+      } else if (kind < 0.85) {
+        profile.readings.push_back({bearing, max_range, ReadingKind::kClear});
+      } else {
+        profile.readings.push_back({bearing, near / 3, ReadingKind::kBlind});
+      }
+    }
+  }
+  return profile;
+}
+
 TEST(InsertProfile, MatchesTheIdealModelCellForCell) {
   // Frames like the paper's camera's: 320 columns over 60°, runs of hits at
   // changing ranges, clear runs and blind patches, from fixed seeds; and a
@@ -342,25 +381,7 @@ TEST(InsertProfile, MatchesTheIdealModelCellForCell) {
     const Pose2 pose(uniform(-0.05, 0.05), uniform(-0.05, 0.05), uniform(-3.0, 3.0));
     const int columns = frame == 7 ? 1920 : 320;
     const double field_deg = frame == 7 ? 360.0 : 60.0;
-    ObstacleProfile profile{{}, 0.4};
-    int column = 0;
-    while (column < columns) {
-      const int run = 5 + static_cast<int>(uniform(0.0, 60.0));
-      const double kind = uniform(0.0, 1.0);
-      const double near = uniform(0.05, 0.4);
-      const double slope = uniform(-0.004, 0.004);
-      for (int i = 0; i < run && column < columns; ++i, ++column) {
-        const double bearing = DegToRad(field_deg / 2 - field_deg * (column + 0.5) / columns);
-        if (kind < 0.55) {
-          profile.readings.push_back(
-              {bearing, std::clamp(near + slope * i, 0.02, 0.399), ReadingKind::kHit});
-        } else if (kind < 0.85) {
-          profile.readings.push_back({bearing, 0.4, ReadingKind::kClear});
-        } else {
-          profile.readings.push_back({bearing, near / 3, ReadingKind::kBlind});
-        }
-      }
-    }
+    const ObstacleProfile profile = RandomFrame(uniform, columns, field_deg, 0.4);
     const std::size_t applied = InsertProfile(grid, profile, pose);
     ASSERT_EQ(grid.geometry(), geometry);  // no growth: the frame fits
     const std::vector<double> ideal = IdealFrame(geometry, profile, pose);
@@ -377,6 +398,191 @@ TEST(InsertProfile, MatchesTheIdealModelCellForCell) {
     EXPECT_EQ(wrong, 0) << "frame " << frame;
     EXPECT_EQ(applied, touched) << "frame " << frame;
   }
+}
+
+// Makes cell c solid: hit to the clamp from two places far apart.
+void MakeSolid(OccupancyGrid& grid, const CellIndex& c) {
+  for (int i = 0; i < 6; ++i) {
+    grid.BeginFrame(Eigen::Vector2d(i % 2 == 0 ? -10.0 : 10.0, 0.0));
+    grid.Apply(c, CellUpdate::kHit);
+  }
+  ASSERT_TRUE(grid.Solid(c));
+}
+
+TEST(InsertProfile, ARayStopsAtASolidWallUnlessItEndsThere) {
+  // A solid wall across x = 0.1 m; readings along +x (bearing -90° facing north).
+  OccupancyGrid grid = MetreGrid();
+  for (double y = -0.3; y <= 0.3; y += kCell) MakeSolid(grid, At(grid, 0.105, y));
+  const double east = DegToRad(-90.0);
+  // Seen through the wall to 0.3 m (a wall passing for floor): stops before it.
+  InsertProfile(grid, Profile({{east, 0.3, ReadingKind::kHit}}), kFacingNorth);
+  EXPECT_NEAR(grid.Probability(At(grid, 0.055, 0.005)), 0.4, 1e-6);  // one miss
+  EXPECT_NEAR(grid.Probability(At(grid, 0.095, 0.005)), 0.4, 1e-6);
+  EXPECT_TRUE(grid.Solid(At(grid, 0.105, 0.005)));   // untouched
+  EXPECT_FALSE(grid.Known(At(grid, 0.2, 0.005)));    // nothing beyond
+  EXPECT_FALSE(grid.Known(At(grid, 0.305, 0.005)));  // and no hit at the end
+  // A reading of the wall itself, ending less than three cells beyond where
+  // it enters the wall, runs on to its end: a range a cell or two long is
+  // the wall's own.
+  InsertProfile(grid, Profile({{east, 0.12, ReadingKind::kHit}}), kFacingNorth);
+  EXPECT_FALSE(grid.Solid(At(grid, 0.105, 0.005)));  // took the miss
+  EXPECT_EQ(grid.State(At(grid, 0.125, 0.005)), CellState::kOccupied);
+  // A clear reading stops the same way.
+  OccupancyGrid clear = MetreGrid();
+  MakeSolid(clear, At(clear, 0.105, 0.005));
+  InsertProfile(clear, Profile({{east, 0.4, ReadingKind::kClear}}), kFacingNorth);
+  EXPECT_NEAR(clear.Probability(At(clear, 0.095, 0.005)), 0.4, 1e-6);
+  EXPECT_FALSE(clear.Known(At(clear, 0.3, 0.005)));
+}
+
+// IdealFrame with solid cells already in the grid: the ideal model where each
+// hit or clear ray that enters a solid cell more than three cells short of
+// its end stops just before it, with no hit at its end; the grid's cells
+// before the frame are `before` (log-odds, 0 unknown), and the result is the
+// log-odds every cell should hold.
+std::vector<double> IdealFrameWithSolids(const OccupancyGrid& before,
+                                         const ObstacleProfile& profile, const Pose2& pose) {
+  const GridGeometry& g = before.geometry();
+  const auto entry = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, int x, int y) {
+    return Entry(p, q, x, y);
+  };
+  enum Mark { kNone, kMiss, kBlind, kHit };
+  std::vector<Mark> marks(g.CellCount(), kNone);
+  const Eigen::Vector2d p = (pose.translation() - g.origin()) / g.resolution();
+  const CellIndex robot = g.CellOf(pose.translation());
+  const auto box = [&](const CellIndex& end, auto&& each) {
+    for (int y = std::min(end.y, robot.y) - 1; y <= std::max(end.y, robot.y) + 1; ++y) {
+      for (int x = std::min(end.x, robot.x) - 1; x <= std::max(end.x, robot.x) + 1; ++x) {
+        if (g.Contains({x, y})) each(x, y);
+      }
+    }
+  };
+  // Each non-blind reading's segment in cell units, cut at its first solid
+  // cell, and whether it still ends in a hit.
+  struct Cut {
+    Eigen::Vector2d q;
+    bool hit;
+    bool cut;
+  };
+  std::vector<Cut> cuts;
+  for (const auto& r : profile.readings) {
+    const Eigen::Vector2d end_world = pose * Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad),
+                                                             r.range_m * std::sin(r.bearing_rad));
+    Eigen::Vector2d q = (end_world - g.origin()) / g.resolution();
+    const double length = (q - p).norm();
+    double stop = std::numeric_limits<double>::infinity();
+    if (r.kind != ReadingKind::kBlind) {
+      box(g.CellOf(end_world), [&](int x, int y) {
+        const double t = entry(p, q, x, y);
+        if (t >= 0.0 && t * length < length - 3.0 && before.Solid({x, y})) {
+          stop = std::min(stop, t * length);
+        }
+      });
+    }
+    const bool cut = std::isfinite(stop);
+    if (cut) q = p + (q - p) * (std::max(0.0, stop - 1e-6) / length);
+    cuts.push_back({q, r.kind == ReadingKind::kHit && !cut, cut});
+  }
+  for (const ReadingKind pass : {ReadingKind::kHit, ReadingKind::kBlind, ReadingKind::kClear}) {
+    for (std::size_t i = 0; i < profile.readings.size(); ++i) {
+      const auto& r = profile.readings[i];
+      const Cut& c = cuts[i];
+      if (r.kind != pass && !(pass == ReadingKind::kClear && r.kind == ReadingKind::kHit)) continue;
+      const CellIndex end = CellOfCellUnits(g, c.q);
+      if (pass == ReadingKind::kHit) {
+        if (c.hit && marks[g.Flat(end)] == kNone) marks[g.Flat(end)] = kHit;
+        continue;
+      }
+      const Mark mark = pass == ReadingKind::kBlind ? kBlind : kMiss;
+      box(end, [&](int x, int y) {
+        const bool is_end = CellIndex{x, y} == end;
+        if (is_end && c.hit) return;
+        if (is_end && c.cut && (c.q - p).norm() == 0.0) return;
+        if (!is_end && entry(p, c.q, x, y) < 0.0) return;
+        if (marks[g.Flat({x, y})] == kNone) marks[g.Flat({x, y})] = mark;
+      });
+    }
+  }
+  const double hit = std::log(0.7 / 0.3);
+  const double miss = std::log(0.4 / 0.6);
+  const double clamp_min = std::log(0.12 / 0.88);
+  const double clamp_max = std::log(0.97 / 0.03);
+  std::vector<double> log_odds;
+  log_odds.reserve(marks.size());
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    const CellIndex c = g.Unflat(i);
+    const double l = before.LogOdds(c);
+    const bool known = before.Known(c);
+    switch (marks[i]) {
+      case kHit:
+        log_odds.push_back(std::min(l + hit, clamp_max));
+        break;
+      case kMiss:
+        log_odds.push_back(std::max(l + miss, clamp_min));
+        break;
+      case kBlind:
+        log_odds.push_back(known ? l : std::log(0.6 / 0.4));
+        break;
+      case kNone:
+        log_odds.push_back(l);
+        break;
+    }
+  }
+  return log_odds;
+}
+
+TEST(InsertProfile, MatchesTheIdealModelWithSolidWallsCellForCell) {
+  // Random frames as above over random solid wall segments: the walk that
+  // skips what neighbouring rays covered must still stop each ray exactly
+  // where a ray walked whole would.
+  std::mt19937 random(11);
+  const auto uniform = [&random](double lo, double hi) {
+    return lo + (hi - lo) * static_cast<double>(random()) / 4294967296.0;
+  };
+  int shielded = 0;  // cells a frame would touch but for the walls
+  for (int frame = 0; frame < 24; ++frame) {
+    const GridGeometry geometry(kCell, {-0.6, -0.6}, 120, 120);
+    OccupancyGrid grid(geometry);
+    // Four walls solid; a fifth hit from two places but pulled off the
+    // clamp by a miss (its blocks flagged, its cells not solid).
+    for (int wall = 0; wall < 5; ++wall) {
+      const double angle = uniform(-3.14, 3.14);
+      const double range = uniform(0.08, 0.35);
+      const Eigen::Vector2d centre(range * std::cos(angle), range * std::sin(angle));
+      const Eigen::Vector2d along(-std::sin(angle + uniform(-0.6, 0.6)),
+                                  std::cos(angle + uniform(-0.6, 0.6)));
+      const double half = uniform(0.03, 0.2);
+      for (double s = -half; s <= half; s += 0.5 * kCell) {
+        const CellIndex c = geometry.CellOf(centre + s * along.normalized());
+        if (grid.Solid(c)) continue;
+        MakeSolid(grid, c);
+        if (wall < 4) continue;
+        grid.BeginFrame();
+        grid.Apply(c, CellUpdate::kMiss);
+        ASSERT_FALSE(grid.Solid(c));
+      }
+    }
+    const OccupancyGrid before = grid;
+    const Pose2 pose(uniform(-0.05, 0.05), uniform(-0.05, 0.05), uniform(-3.0, 3.0));
+    const int columns = frame % 6 == 5 ? 1920 : 320;  // a full circle now and then
+    const double field_deg = frame % 6 == 5 ? 360.0 : 60.0;
+    const ObstacleProfile profile = RandomFrame(uniform, columns, field_deg, 0.45);
+    InsertProfile(grid, profile, pose);
+    ASSERT_EQ(grid.geometry(), geometry);
+    const std::vector<double> ideal = IdealFrameWithSolids(before, profile, pose);
+    const std::vector<double> unshielded = IdealFrame(geometry, profile, pose);
+    int wrong = 0;
+    for (std::size_t i = 0; i < ideal.size(); ++i) {
+      const CellIndex c = geometry.Unflat(i);
+      if (unshielded[i] != 0.5 && !before.Known(c) && !grid.Known(c)) ++shielded;
+      if (std::abs(grid.LogOdds(c) - ideal[i]) > 1e-4 && ++wrong <= 5) {
+        ADD_FAILURE() << "frame " << frame << " cell " << c.x << ", " << c.y << ": "
+                      << grid.LogOdds(c) << " instead of " << ideal[i];
+      }
+    }
+    EXPECT_EQ(wrong, 0) << "frame " << frame;
+  }
+  EXPECT_GT(shielded, 1000);  // the walls were in the frames' way
 }
 
 TEST(InsertProfile, GrowsTheGridToCoverTheFrame) {
