@@ -128,34 +128,40 @@ std::size_t WalkRay(OccupancyGrid& grid, const Eigen::Vector2d& from, const Ray&
   return WalkSegment<kUpdate>(grid, from + skip * ray.direction, ray.end, ray.include_end);
 }
 
-// Walks rays[lo + 1 .. hi - 1] (rays lo and hi are walked), each middle one
-// between the two around it, from where they leave it nothing to do
-// (SkipDistance). Rays of one frame are dense (0.2° apart for the paper's
-// camera, ~1/20 of a cell at 0.4 m) and all start at the robot, so most of
-// each ray's cells are ones its neighbours have already updated; bisecting
-// visits each cell of such a frame about three times instead of about 25,
-// with the same result as walking every ray whole.
-template <CellUpdate kUpdate>
-std::size_t WalkBetween(OccupancyGrid& grid, const Eigen::Vector2d& from,
-                        const std::vector<Ray>& rays, std::size_t lo, std::size_t hi) {
-  if (hi - lo < 2) return 0;
-  const std::size_t m = lo + (hi - lo) / 2;
-  const double skip =
-      SkipDistance(rays[lo], rays[m], rays[hi], rays[lo].Covered(), rays[hi].Covered());
-  return WalkRay<kUpdate>(grid, from, rays[m], skip) +
-         WalkBetween<kUpdate>(grid, from, rays, lo, m) +
-         WalkBetween<kUpdate>(grid, from, rays, m, hi);
+// Visits every ray of a pass, in the profile's order of bisection: the
+// first and the last whole (skip 0), then each middle one between the two
+// around it, from where they leave it nothing to do: visit(i, skip), with
+// SkipDistance from reach(ray), how far each visited ray has covered. Rays
+// of one frame are dense (0.2° apart for the paper's camera, ~1/20 of a cell
+// at 0.4 m) and all start at the robot, so most of each ray's cells are
+// ones its neighbours have already covered; bisecting visits each cell of
+// such a frame about three times instead of about 25, with the same result
+// as visiting every ray whole.
+template <class Reach, class Visit>
+void VisitBisected(const std::vector<Ray>& rays, Reach&& reach, Visit&& visit) {
+  if (rays.empty()) return;
+  visit(std::size_t{0}, 0.0);
+  if (rays.size() == 1) return;
+  visit(rays.size() - 1, 0.0);
+  const auto between = [&](const auto& self, std::size_t lo, std::size_t hi) -> void {
+    if (hi - lo < 2) return;
+    const std::size_t m = lo + (hi - lo) / 2;
+    visit(m, SkipDistance(rays[lo], rays[m], rays[hi], reach(rays[lo]), reach(rays[hi])));
+    self(self, lo, m);
+    self(self, m, hi);
+  };
+  between(between, 0, rays.size() - 1);
 }
 
-// Walks the rays of one pass, in the profile's order.
+// Walks the rays of one pass (VisitBisected).
 template <CellUpdate kUpdate>
 std::size_t WalkPass(OccupancyGrid& grid, const Eigen::Vector2d& from,
                      const std::vector<Ray>& rays) {
-  if (rays.empty()) return 0;
-  std::size_t applied = WalkRay<kUpdate>(grid, from, rays.front(), 0.0);
-  if (rays.size() == 1) return applied;
-  applied += WalkRay<kUpdate>(grid, from, rays.back(), 0.0);
-  return applied + WalkBetween<kUpdate>(grid, from, rays, 0, rays.size() - 1);
+  std::size_t applied = 0;
+  VisitBisected(
+      rays, [](const Ray& r) { return r.Covered(); },
+      [&](std::size_t i, double skip) { applied += WalkRay<kUpdate>(grid, from, rays[i], skip); });
+  return applied;
 }
 
 void CheckReading(const core::RangeReading& reading) {
@@ -313,43 +319,29 @@ double CheckRay(const OccupancyGrid& grid, const Eigen::Vector2d& from, Ray& r, 
   return stop;
 }
 
-// Checks rays[lo + 1 .. hi - 1] as WalkBetween walks them, each middle one
-// only beyond where the two around it were checked; records each stop.
-void CheckBetween(const OccupancyGrid& grid, const Eigen::Vector2d& from, std::vector<Ray>& rays,
-                  std::vector<double>& stops, std::size_t lo, std::size_t hi) {
-  if (hi - lo < 2) return;
-  const std::size_t m = lo + (hi - lo) / 2;
-  const double skip = SkipDistance(rays[lo], rays[m], rays[hi], rays[lo].checked, rays[hi].checked);
-  stops[m] = CheckRay(grid, from, rays[m], skip);
-  CheckBetween(grid, from, rays, stops, lo, m);
-  CheckBetween(grid, from, rays, stops, m, hi);
-}
-
 // Shortens each miss ray that passes through a solid cell more than
 // kSolidStopMarginCells short of its end to end just before that cell, no
 // hit at its end; returns how many it shortened. Rays are in cell units.
-// The search skips, as the walk does, what the neighbouring rays covered.
+// The search skips, as the walk does, what the neighbouring rays covered
+// (VisitBisected, with how far each was checked).
 std::size_t StopAtSolidCells(const OccupancyGrid& grid, const Eigen::Vector2d& from,
                              std::vector<Ray>& rays) {
-  if (!(grid.options().solid_baseline_m > 0.0) || rays.empty()) return 0;  // none is ever solid
-  std::vector<double> stops(rays.size(), -1.0);
-  stops.front() = CheckRay(grid, from, rays.front(), 0.0);
-  if (rays.size() > 1) {
-    stops.back() = CheckRay(grid, from, rays.back(), 0.0);
-    CheckBetween(grid, from, rays, stops, 0, rays.size() - 1);
-  }
+  if (!(grid.options().solid_baseline_m > 0.0)) return 0;  // none is ever solid
   std::size_t stopped = 0;
-  for (std::size_t i = 0; i < rays.size(); ++i) {
-    if (stops[i] < 0.0) continue;
-    ++stopped;
-    // The cell before the solid one is the last the ray passes through.
-    constexpr double kJustShort = 1e-6;
-    Ray& r = rays[i];
-    r.length = std::max(0.0, stops[i] - kJustShort);
-    r.end = from + r.length * r.direction;
-    r.end_hit = false;
-    r.include_end = r.length > 0.0;
-  }
+  VisitBisected(
+      rays, [](const Ray& r) { return r.checked; },
+      [&](std::size_t i, double skip) {
+        Ray& r = rays[i];
+        const double stop = CheckRay(grid, from, r, skip);
+        if (stop < 0.0) return;
+        ++stopped;
+        // The cell before the solid one is the last the ray passes through.
+        constexpr double kJustShort = 1e-6;
+        r.length = std::max(0.0, stop - kJustShort);
+        r.end = from + r.length * r.direction;
+        r.end_hit = false;
+        r.include_end = r.length > 0.0;
+      });
   return stopped;
 }
 

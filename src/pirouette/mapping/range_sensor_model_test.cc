@@ -296,47 +296,105 @@ double Entry(const Eigen::Vector2d& p, const Eigen::Vector2d& q, int x, int y) {
 
 // The ideal model computed cell by cell, independently of InsertProfile's
 // traversal: a segment passes through a cell when its clip against the cell's
-// square (Liang–Barsky) has positive length. Returns the probability every
-// cell of `g` should hold after one frame on a fresh grid.
-std::vector<double> IdealFrame(const GridGeometry& g, const ObstacleProfile& profile,
-                               const Pose2& pose) {
-  const auto crosses = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, int x, int y) {
-    return Entry(p, q, x, y) >= 0.0;
-  };
+// square (Liang–Barsky) has positive length (Entry). Each hit or clear ray
+// that enters a cell solid in `before` more than three cells short of its
+// end stops just before it, with no hit at its end. Returns the log-odds
+// every cell of `before` (the grid before the frame) should hold after it.
+std::vector<double> IdealFrameOn(const OccupancyGrid& before, const ObstacleProfile& profile,
+                                 const Pose2& pose) {
+  const GridGeometry& g = before.geometry();
+
   enum Mark { kNone, kMiss, kBlind, kHit };
   std::vector<Mark> marks(g.CellCount(), kNone);
   const Eigen::Vector2d p = (pose.translation() - g.origin()) / g.resolution();
-  // In the order of precedence: hits, blind areas, misses.
+  const CellIndex robot = g.CellOf(pose.translation());
+  const auto box = [&](const CellIndex& end, auto&& each) {
+    for (int y = std::min(end.y, robot.y) - 1; y <= std::max(end.y, robot.y) + 1; ++y) {
+      for (int x = std::min(end.x, robot.x) - 1; x <= std::max(end.x, robot.x) + 1; ++x) {
+        if (g.Contains({x, y})) each(x, y);
+      }
+    }
+  };
+  // Each non-blind reading's segment in cell units, cut at its first solid
+  // cell, and whether it still ends in a hit.
+  struct Cut {
+    Eigen::Vector2d q;
+    bool hit;
+    bool cut;
+  };
+  std::vector<Cut> cuts;
+  for (const auto& r : profile.readings) {
+    const Eigen::Vector2d end_world = pose * Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad),
+                                                             r.range_m * std::sin(r.bearing_rad));
+    Eigen::Vector2d q = (end_world - g.origin()) / g.resolution();
+    const double length = (q - p).norm();
+    double stop = std::numeric_limits<double>::infinity();
+    if (r.kind != ReadingKind::kBlind) {
+      box(g.CellOf(end_world), [&](int x, int y) {
+        const double t = Entry(p, q, x, y);
+        if (t >= 0.0 && t * length < length - 3.0 && before.Solid({x, y})) {
+          stop = std::min(stop, t * length);
+        }
+      });
+    }
+    const bool cut = std::isfinite(stop);
+    if (cut) q = p + (q - p) * (std::max(0.0, stop - 1e-6) / length);
+    cuts.push_back({q, r.kind == ReadingKind::kHit && !cut, cut});
+  }
   for (const ReadingKind pass : {ReadingKind::kHit, ReadingKind::kBlind, ReadingKind::kClear}) {
-    for (const auto& r : profile.readings) {
+    for (std::size_t i = 0; i < profile.readings.size(); ++i) {
+      const auto& r = profile.readings[i];
+      const Cut& c = cuts[i];
       if (r.kind != pass && !(pass == ReadingKind::kClear && r.kind == ReadingKind::kHit)) continue;
-      const Eigen::Vector2d end_world = pose * Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad),
-                                                               r.range_m * std::sin(r.bearing_rad));
-      const Eigen::Vector2d q = (end_world - g.origin()) / g.resolution();
-      const CellIndex end = g.CellOf(end_world);
+      const CellIndex end = CellOfCellUnits(g, c.q);
       if (pass == ReadingKind::kHit) {
-        if (marks[g.Flat(end)] == kNone) marks[g.Flat(end)] = kHit;
+        if (c.hit && marks[g.Flat(end)] == kNone) marks[g.Flat(end)] = kHit;
         continue;
       }
       const Mark mark = pass == ReadingKind::kBlind ? kBlind : kMiss;
-      for (int y = std::min(end.y, g.CellOf(pose.translation()).y) - 1;
-           y <= std::max(end.y, g.CellOf(pose.translation()).y) + 1; ++y) {
-        for (int x = std::min(end.x, g.CellOf(pose.translation()).x) - 1;
-             x <= std::max(end.x, g.CellOf(pose.translation()).x) + 1; ++x) {
-          const bool is_end = CellIndex{x, y} == end;
-          if (is_end && r.kind == ReadingKind::kHit) continue;
-          if (!is_end && !crosses(p, q, x, y)) continue;
-          if (marks[g.Flat({x, y})] == kNone) marks[g.Flat({x, y})] = mark;
-        }
-      }
+      box(end, [&](int x, int y) {
+        const bool is_end = CellIndex{x, y} == end;
+        if (is_end && c.hit) return;
+        if (is_end && c.cut && (c.q - p).norm() == 0.0) return;
+        if (!is_end && Entry(p, c.q, x, y) < 0.0) return;
+        if (marks[g.Flat({x, y})] == kNone) marks[g.Flat({x, y})] = mark;
+      });
     }
   }
-  std::vector<double> probabilities;
-  probabilities.reserve(marks.size());
-  for (const Mark m : marks) {
-    probabilities.push_back(m == kHit ? 0.7 : m == kBlind ? 0.6 : m == kMiss ? 0.4 : 0.5);
+  const double hit = std::log(0.7 / 0.3);
+  const double miss = std::log(0.4 / 0.6);
+  const double clamp_min = std::log(0.12 / 0.88);
+  const double clamp_max = std::log(0.97 / 0.03);
+  std::vector<double> log_odds;
+  log_odds.reserve(marks.size());
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    const CellIndex c = g.Unflat(i);
+    const double l = before.LogOdds(c);
+    const bool known = before.Known(c);
+    switch (marks[i]) {
+      case kHit:
+        log_odds.push_back(std::min(l + hit, clamp_max));
+        break;
+      case kMiss:
+        log_odds.push_back(std::max(l + miss, clamp_min));
+        break;
+      case kBlind:
+        log_odds.push_back(known ? l : std::log(0.6 / 0.4));
+        break;
+      case kNone:
+        log_odds.push_back(l);
+        break;
+    }
   }
-  return probabilities;
+  return log_odds;
+}
+
+// IdealFrameOn a fresh grid of geometry `g`, as probabilities.
+std::vector<double> IdealFrame(const GridGeometry& g, const ObstacleProfile& profile,
+                               const Pose2& pose) {
+  std::vector<double> cells = IdealFrameOn(OccupancyGrid(g), profile, pose);
+  for (double& c : cells) c = LogOddsToProbability(c);
+  return cells;
 }
 
 // A frame like the paper's camera's: `columns` readings over `field_deg`,
@@ -435,102 +493,6 @@ TEST(InsertProfile, ARayStopsAtASolidWallUnlessItEndsThere) {
   EXPECT_FALSE(clear.Known(At(clear, 0.3, 0.005)));
 }
 
-// IdealFrame with solid cells already in the grid: the ideal model where each
-// hit or clear ray that enters a solid cell more than three cells short of
-// its end stops just before it, with no hit at its end; the grid's cells
-// before the frame are `before` (log-odds, 0 unknown), and the result is the
-// log-odds every cell should hold.
-std::vector<double> IdealFrameWithSolids(const OccupancyGrid& before,
-                                         const ObstacleProfile& profile, const Pose2& pose) {
-  const GridGeometry& g = before.geometry();
-  const auto entry = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, int x, int y) {
-    return Entry(p, q, x, y);
-  };
-  enum Mark { kNone, kMiss, kBlind, kHit };
-  std::vector<Mark> marks(g.CellCount(), kNone);
-  const Eigen::Vector2d p = (pose.translation() - g.origin()) / g.resolution();
-  const CellIndex robot = g.CellOf(pose.translation());
-  const auto box = [&](const CellIndex& end, auto&& each) {
-    for (int y = std::min(end.y, robot.y) - 1; y <= std::max(end.y, robot.y) + 1; ++y) {
-      for (int x = std::min(end.x, robot.x) - 1; x <= std::max(end.x, robot.x) + 1; ++x) {
-        if (g.Contains({x, y})) each(x, y);
-      }
-    }
-  };
-  // Each non-blind reading's segment in cell units, cut at its first solid
-  // cell, and whether it still ends in a hit.
-  struct Cut {
-    Eigen::Vector2d q;
-    bool hit;
-    bool cut;
-  };
-  std::vector<Cut> cuts;
-  for (const auto& r : profile.readings) {
-    const Eigen::Vector2d end_world = pose * Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad),
-                                                             r.range_m * std::sin(r.bearing_rad));
-    Eigen::Vector2d q = (end_world - g.origin()) / g.resolution();
-    const double length = (q - p).norm();
-    double stop = std::numeric_limits<double>::infinity();
-    if (r.kind != ReadingKind::kBlind) {
-      box(g.CellOf(end_world), [&](int x, int y) {
-        const double t = entry(p, q, x, y);
-        if (t >= 0.0 && t * length < length - 3.0 && before.Solid({x, y})) {
-          stop = std::min(stop, t * length);
-        }
-      });
-    }
-    const bool cut = std::isfinite(stop);
-    if (cut) q = p + (q - p) * (std::max(0.0, stop - 1e-6) / length);
-    cuts.push_back({q, r.kind == ReadingKind::kHit && !cut, cut});
-  }
-  for (const ReadingKind pass : {ReadingKind::kHit, ReadingKind::kBlind, ReadingKind::kClear}) {
-    for (std::size_t i = 0; i < profile.readings.size(); ++i) {
-      const auto& r = profile.readings[i];
-      const Cut& c = cuts[i];
-      if (r.kind != pass && !(pass == ReadingKind::kClear && r.kind == ReadingKind::kHit)) continue;
-      const CellIndex end = CellOfCellUnits(g, c.q);
-      if (pass == ReadingKind::kHit) {
-        if (c.hit && marks[g.Flat(end)] == kNone) marks[g.Flat(end)] = kHit;
-        continue;
-      }
-      const Mark mark = pass == ReadingKind::kBlind ? kBlind : kMiss;
-      box(end, [&](int x, int y) {
-        const bool is_end = CellIndex{x, y} == end;
-        if (is_end && c.hit) return;
-        if (is_end && c.cut && (c.q - p).norm() == 0.0) return;
-        if (!is_end && entry(p, c.q, x, y) < 0.0) return;
-        if (marks[g.Flat({x, y})] == kNone) marks[g.Flat({x, y})] = mark;
-      });
-    }
-  }
-  const double hit = std::log(0.7 / 0.3);
-  const double miss = std::log(0.4 / 0.6);
-  const double clamp_min = std::log(0.12 / 0.88);
-  const double clamp_max = std::log(0.97 / 0.03);
-  std::vector<double> log_odds;
-  log_odds.reserve(marks.size());
-  for (std::size_t i = 0; i < marks.size(); ++i) {
-    const CellIndex c = g.Unflat(i);
-    const double l = before.LogOdds(c);
-    const bool known = before.Known(c);
-    switch (marks[i]) {
-      case kHit:
-        log_odds.push_back(std::min(l + hit, clamp_max));
-        break;
-      case kMiss:
-        log_odds.push_back(std::max(l + miss, clamp_min));
-        break;
-      case kBlind:
-        log_odds.push_back(known ? l : std::log(0.6 / 0.4));
-        break;
-      case kNone:
-        log_odds.push_back(l);
-        break;
-    }
-  }
-  return log_odds;
-}
-
 TEST(InsertProfile, MatchesTheIdealModelWithSolidWallsCellForCell) {
   // Random frames as above over random solid wall segments: the walk that
   // skips what neighbouring rays covered must still stop each ray exactly
@@ -569,7 +531,7 @@ TEST(InsertProfile, MatchesTheIdealModelWithSolidWallsCellForCell) {
     const ObstacleProfile profile = RandomFrame(uniform, columns, field_deg, 0.45);
     InsertProfile(grid, profile, pose);
     ASSERT_EQ(grid.geometry(), geometry);
-    const std::vector<double> ideal = IdealFrameWithSolids(before, profile, pose);
+    const std::vector<double> ideal = IdealFrameOn(before, profile, pose);
     const std::vector<double> unshielded = IdealFrame(geometry, profile, pose);
     int wrong = 0;
     for (std::size_t i = 0; i < ideal.size(); ++i) {
