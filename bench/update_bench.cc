@@ -113,13 +113,13 @@ const std::vector<Frame>& Frames() {
   return frames;
 }
 
-// With solid walls (the default) or without (solid_baseline_m 0: no ray is
+// With solid walls (the default) or without (two_places_m 0: no ray is
 // ever stopped, and the walk that looks for solid cells is skipped): what
 // that walk costs.
 void UpdatePirouette(benchmark::State& state, bool solid) {
   const auto& frames = Frames();
   pirouette::mapping::OccupancyOptions options;
-  if (!solid) options.solid_baseline_m = 0.0;
+  if (!solid) options.two_places_m = 0.0;
   // The floor and the 0.4 m the robot sees past its edges: no growth.
   pirouette::mapping::OccupancyGrid grid(
       pirouette::core::GridGeometry::Covering(kCell, {-0.5, -0.5}, {5.0, 5.0}), options);

@@ -52,9 +52,12 @@ cv::Mat3b DrawMapPicture(const mapping::OccupancyGrid& grid, const std::vector<c
   MapCanvas canvas = MapCanvas::Of(
       g,
       [&](const core::CellIndex& c) {
-        return grid.Known(c)
-                   ? static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - grid.Probability(c))))
-                   : kUnknownGrey;
+        // Free seen from one place only is unknown in the map of record.
+        const bool unknown = !grid.Known(c) || (grid.State(c) == mapping::CellState::kFree &&
+                                                !grid.FreeFromTwoPlaces(c));
+        return unknown
+                   ? kUnknownGrey
+                   : static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - grid.Probability(c))));
       },
       target_width_px);
   cv::Mat3b& image = canvas.image;

@@ -35,7 +35,8 @@ struct MapCanvas {
 
 // The picture of a run a person looks at (SPEC.md's map.png): the map in
 // grey levels by occupancy probability (white free, black occupied, the
-// unknown mid grey), the robot's path in blue, its stops (pirouettes) as
+// unknown mid grey, and free seen from one place only, which the map of
+// record calls unknown, mid grey too: OccupancyGrid::ToMapOfRecord), the robot's path in blue, its stops (pirouettes) as
 // orange dots, the start in green and the final pose in red with its
 // heading; north up. `path` and `stops` are in the map's frame. With a pose
 // graph (its nodes in the map's frame), its odometry and scan-match edges

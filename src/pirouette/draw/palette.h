@@ -39,6 +39,13 @@ inline const cv::Vec3b kRightColour = kPathColour;
 inline const cv::Vec3b kWrongColour = kRobotColour;
 inline const cv::Vec3b kCannotTellColour = kStopColour;
 
+// A map judged cell by cell against the truth (`eval --picture`): free where
+// the truth is not red, occupied far from the truth blue, floor the map left
+// unknown pale amber.
+inline const cv::Vec3b kFalseFreeColour = kRobotColour;
+inline const cv::Vec3b kFalseOccupiedColour(235, 120, 0);
+inline const cv::Vec3b kMissedFloorColour(150, 215, 245);
+
 // Map cells in grey levels (map_server's: white free, black occupied), the
 // unknown a mid grey.
 inline constexpr unsigned char kUnknownGrey = 160;

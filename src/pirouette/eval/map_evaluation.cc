@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "pirouette/draw/map_picture.h"
+#include "pirouette/draw/palette.h"
 #include "pirouette/eval/reachability.h"
 
 namespace pirouette::eval {
@@ -17,9 +19,10 @@ using mapping::CellState;
 // slack keeps exactly kFalseOccupiedCells from counting as farther.
 constexpr double kDistanceSlackCells = 1e-3;
 
-// The map's cells counted and judged against the truth.
+// The map's cells counted and judged against the truth; each cell's verdict
+// goes in `verdicts` where it is given.
 MapEvaluation Judge(const mapping::TrinaryMap& map, const Reachability& truth,
-                    const cv::Mat1f& distance_cells) {
+                    const cv::Mat1f& distance_cells, std::vector<CellVerdict>* verdicts) {
   const core::GridGeometry& g = map.geometry;
   const TruthWindow& window = truth.window;
   MapEvaluation e;
@@ -33,23 +36,35 @@ MapEvaluation Judge(const mapping::TrinaryMap& map, const Reachability& truth,
       const bool inside = window.Contains(x, y);
       const int a = static_cast<int>(x - window.x0);
       const int b = static_cast<int>(y - window.y0);
+      const bool reachable = inside && truth.reachable[window.Flat(x, y)] != 0;
+      CellVerdict verdict = CellVerdict::kUnknown;
       switch (map.At({x, y})) {
         case CellState::kFree:
           ++e.free;
-          if (!inside || truth.free[window.Flat(x, y)] == 0) ++false_free;
-          if (inside && truth.reachable[window.Flat(x, y)] != 0) ++covered;
+          verdict = CellVerdict::kFree;
+          if (!inside || truth.free[window.Flat(x, y)] == 0) {
+            ++false_free;
+            verdict = CellVerdict::kFalseFree;
+          }
+          if (reachable) ++covered;
           break;
         case CellState::kOccupied: {
           ++e.occupied;
           const double d = inside ? static_cast<double>(distance_cells(b, a)) : 0.0;
           distance_sum_cells += d;
-          if (d > kFalseOccupiedCells + kDistanceSlackCells) ++false_occupied;
+          verdict = CellVerdict::kOccupied;
+          if (d > kFalseOccupiedCells + kDistanceSlackCells) {
+            ++false_occupied;
+            verdict = CellVerdict::kFalseOccupied;
+          }
           break;
         }
         case CellState::kUnknown:
           ++e.unknown;
+          if (reachable) verdict = CellVerdict::kMissedFloor;
           break;
       }
+      if (verdicts != nullptr) (*verdicts)[g.Flat({x, y})] = verdict;
     }
   }
   const auto fraction = [](std::size_t part, std::size_t whole) {
@@ -63,20 +78,78 @@ MapEvaluation Judge(const mapping::TrinaryMap& map, const Reachability& truth,
   return e;
 }
 
-}  // namespace
-
-MapEvaluation EvaluateMap(const mapping::TrinaryMap& map, const sim::World& world) {
+// EvaluateMap, and each cell's verdict where `verdicts` is given.
+MapEvaluation Evaluate(const mapping::TrinaryMap& map, const sim::World& world,
+                       std::vector<CellVerdict>* verdicts) {
   const core::GridGeometry& g = map.geometry;
   if (map.cells.size() != g.CellCount()) {
     throw std::invalid_argument("EvaluateMap: the map's cells do not match its geometry");
   }
+  if (verdicts != nullptr) verdicts->assign(g.CellCount(), CellVerdict::kUnknown);
   const Reachability truth = ReachableCells(world, g);
   // The truth's own bytes, read only.
   const cv::Mat1b truth_free(truth.window.height, truth.window.width,
                              const_cast<std::uint8_t*>(truth.free.data()));
   cv::Mat1f distance_cells;
   cv::distanceTransform(truth_free, distance_cells, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
-  return Judge(map, truth, distance_cells);
+  return Judge(map, truth, distance_cells, verdicts);
+}
+
+}  // namespace
+
+MapEvaluation EvaluateMap(const mapping::TrinaryMap& map, const sim::World& world) {
+  return Evaluate(map, world, nullptr);
+}
+
+JudgedMap JudgeMap(const mapping::TrinaryMap& map, const sim::World& world) {
+  JudgedMap judged;
+  judged.evaluation = Evaluate(map, world, &judged.verdicts);
+  return judged;
+}
+
+cv::Mat3b DrawJudgedMap(const mapping::TrinaryMap& map, const JudgedMap& judged,
+                        int target_width_px) {
+  const core::GridGeometry& g = map.geometry;
+  if (judged.verdicts.size() != g.CellCount()) {
+    throw std::invalid_argument("DrawJudgedMap: the verdicts do not match the map's geometry");
+  }
+  const draw::MapCanvas canvas = draw::MapCanvas::Of(
+      g,
+      [&](const core::CellIndex& c) -> std::uint8_t {
+        switch (map.At(c)) {
+          case CellState::kFree:
+            return 255;
+          case CellState::kOccupied:
+            return 0;
+          case CellState::kUnknown:
+            break;
+        }
+        return draw::kUnknownGrey;
+      },
+      target_width_px);
+  cv::Mat3b image = canvas.image;
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      const cv::Vec3b* colour = nullptr;
+      switch (judged.verdicts[g.Flat({x, y})]) {
+        case CellVerdict::kFalseFree:
+          colour = &draw::kFalseFreeColour;
+          break;
+        case CellVerdict::kFalseOccupied:
+          colour = &draw::kFalseOccupiedColour;
+          break;
+        case CellVerdict::kMissedFloor:
+          colour = &draw::kMissedFloorColour;
+          break;
+        default:
+          break;
+      }
+      if (colour == nullptr) continue;
+      const int row = (g.height() - 1 - y) * canvas.scale;
+      image(cv::Rect(x * canvas.scale, row, canvas.scale, canvas.scale)).setTo(*colour);
+    }
+  }
+  return image;
 }
 
 nlohmann::json MapEvaluationToJson(const MapEvaluation& evaluation) {

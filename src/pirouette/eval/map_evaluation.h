@@ -1,8 +1,11 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <nlohmann/json.hpp>
+#include <opencv2/core.hpp>
 #include <string>
+#include <vector>
 
 #include "pirouette/mapping/trinary_map.h"
 #include "pirouette/sim/world.h"
@@ -44,6 +47,32 @@ inline constexpr double kFalseOccupiedCells = 2.0;
 // Judges `map` against `world`. Map cells off the floor are truly occupied.
 // Throws std::invalid_argument when the map's cells do not match its geometry.
 MapEvaluation EvaluateMap(const mapping::TrinaryMap& map, const sim::World& world);
+
+// What the judgement says of one map cell.
+enum class CellVerdict : std::uint8_t {
+  kFree,           // free in the map and in truth
+  kFalseFree,      // free in the map, occupied in truth (counts in false_free)
+  kOccupied,       // occupied in the map, within kFalseOccupiedCells of the truth's
+  kFalseOccupied,  // occupied in the map, farther (counts in false_occupied)
+  kUnknown,        // unknown in the map, and not reachable floor
+  kMissedFloor,    // unknown in the map but in R (what coverage misses)
+};
+
+// The judgement and, cell by cell (GridGeometry::Flat order), its verdicts.
+struct JudgedMap {
+  MapEvaluation evaluation;
+  std::vector<CellVerdict> verdicts;
+};
+
+// EvaluateMap, keeping each cell's verdict.
+JudgedMap JudgeMap(const mapping::TrinaryMap& map, const sim::World& world);
+
+// Where a map is wrong, as a picture a person looks at (`eval --picture`),
+// north up, whole pixels a cell (about target_width_px wide): free white,
+// occupied black, unknown mid grey, as map.png; false free cells red, false
+// occupied cells blue, reachable floor the map left unknown pale amber.
+cv::Mat3b DrawJudgedMap(const mapping::TrinaryMap& map, const JudgedMap& judged,
+                        int target_width_px = 800);
 
 // The fields of SPEC.md's eval: coverage, false_free, false_occupied,
 // wall_error_m, cells {free, occupied, unknown}; and reachable_cells (|R|).

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pirouette/core/angle.h"
+#include "pirouette/draw/palette.h"
 
 namespace pirouette::eval {
 namespace {
@@ -100,6 +101,38 @@ TEST(EvaluateMapTest, KnownErrorsGiveExactFractions) {
   EXPECT_DOUBLE_EQ(e.false_free, 1.0 / 51.0);
   EXPECT_DOUBLE_EQ(e.false_occupied, 2.0 / 4.0);
   EXPECT_NEAR(e.wall_error_m, (3.0 + 3.0 + 1.0 + 2.0) * 0.1 / 4.0, 1e-6);
+}
+
+TEST(JudgeMapTest, EachCellsVerdictAgreesWithTheCounts) {
+  const sim::World world = BoxWorld();
+  TrinaryMap map = PerfectMap(world, kFloorGrid);
+  const auto set = [&map](int x, int y, CellState s) { map.cells[map.geometry.Flat({x, y})] = s; };
+  set(7, 3, CellState::kFree);      // the box, called free
+  set(2, 2, CellState::kOccupied);  // 3 cells from the truth: false
+  set(1, 1, CellState::kOccupied);  // 2 cells: near enough
+  set(5, 5, CellState::kUnknown);   // reachable floor not seen
+  const JudgedMap judged = JudgeMap(map, world);
+  const auto verdict = [&](int x, int y) { return judged.verdicts[kFloorGrid.Flat({x, y})]; };
+  EXPECT_EQ(verdict(7, 3), CellVerdict::kFalseFree);
+  EXPECT_EQ(verdict(2, 2), CellVerdict::kFalseOccupied);
+  EXPECT_EQ(verdict(1, 1), CellVerdict::kOccupied);
+  EXPECT_EQ(verdict(5, 5), CellVerdict::kMissedFloor);
+  EXPECT_EQ(verdict(4, 4), CellVerdict::kFree);
+  const MapEvaluation plain = EvaluateMap(map, world);
+  EXPECT_EQ(judged.evaluation.false_free, plain.false_free);
+  EXPECT_EQ(judged.evaluation.coverage, plain.coverage);
+  EXPECT_EQ(judged.evaluation.false_occupied, plain.false_occupied);
+
+  // The picture: 80 pixels a cell at 800 wide, north up; each wrong cell in its colour.
+  const cv::Mat3b picture = DrawJudgedMap(map, judged, 800);
+  ASSERT_EQ(picture.cols, 800);
+  ASSERT_EQ(picture.rows, 480);
+  const auto pixel = [&](int x, int y) { return picture((5 - y) * 80 + 40, x * 80 + 40); };
+  EXPECT_EQ(pixel(7, 3), draw::kFalseFreeColour);
+  EXPECT_EQ(pixel(2, 2), draw::kFalseOccupiedColour);
+  EXPECT_EQ(pixel(5, 5), draw::kMissedFloorColour);
+  EXPECT_EQ(pixel(1, 1), cv::Vec3b(0, 0, 0));
+  EXPECT_EQ(pixel(4, 4), cv::Vec3b(255, 255, 255));
 }
 
 TEST(EvaluateMapTest, DistancesAreEuclideanBetweenCentres) {

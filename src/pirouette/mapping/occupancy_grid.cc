@@ -48,8 +48,8 @@ void OccupancyOptions::Check() const {
     Refuse("clamp_max_probability", "must be above the occupied threshold 0.65",
            clamp_max_probability);
   }
-  if (!(std::isfinite(solid_baseline_m) && solid_baseline_m >= 0.0 && solid_baseline_m < 1e3)) {
-    Refuse("solid_baseline_m", "must be finite, >= 0 and under 1 km", solid_baseline_m);
+  if (!(std::isfinite(two_places_m) && two_places_m >= 0.0 && two_places_m < 1e3)) {
+    Refuse("two_places_m", "must be finite, >= 0 and under 1 km", two_places_m);
   }
 }
 
@@ -72,7 +72,7 @@ OccupancyGrid::OccupancyGrid(core::GridGeometry geometry, OccupancyOptions optio
       cells_(geometry_.CellCount()) {
   blind_cap_ = std::min(blind_, clamp_max_);
   one_hit_ = std::min(hit_, clamp_max_);
-  const double quanta = options_.solid_baseline_m / kPlaceQuantumM;
+  const double quanta = options_.two_places_m / kPlaceQuantumM;
   baseline_quanta_squared_ = std::max(1, static_cast<int>(std::ceil(quanta * quanta)));
   FlagBlocks();
 }
@@ -107,6 +107,27 @@ TrinaryMap OccupancyGrid::ToTrinary() const {
   return map;
 }
 
+bool OccupancyGrid::WouldCorroborate(const core::CellIndex& c,
+                                     const Eigen::Vector2d& viewpoint) const {
+  if (options_.two_places_m <= 0.0 || !viewpoint.allFinite() || !geometry_.Contains(c)) {
+    return false;
+  }
+  const Cell& cell = cells_[geometry_.Flat(c)];
+  return StateOf(cell) == CellState::kFree && cell.free_from != kNoPlace &&
+         cell.free_from != kTwoPlaces && FarApart(cell.free_from, EncodePlace(viewpoint));
+}
+
+TrinaryMap OccupancyGrid::ToMapOfRecord() const {
+  TrinaryMap map = ToTrinary();
+  if (options_.two_places_m <= 0.0) return map;
+  for (std::size_t i = 0; i < cells_.size(); ++i) {
+    if (map.cells[i] == CellState::kFree && cells_[i].free_from != kTwoPlaces) {
+      map.cells[i] = CellState::kUnknown;
+    }
+  }
+  return map;
+}
+
 TrinaryMap OccupancyGrid::ToExploredMap() const {
   TrinaryMap map{geometry_, std::vector<CellState>(cells_.size())};
   for (std::size_t i = 0; i < cells_.size(); ++i) {
@@ -122,7 +143,7 @@ TrinaryMap OccupancyGrid::ToExploredMap() const {
 
 void OccupancyGrid::BeginFrame(const Eigen::Vector2d& viewpoint) {
   BeginFrame();
-  if (options_.solid_baseline_m > 0.0 && viewpoint.allFinite()) viewpoint_ = EncodePlace(viewpoint);
+  if (options_.two_places_m > 0.0 && viewpoint.allFinite()) viewpoint_ = EncodePlace(viewpoint);
 }
 
 void OccupancyGrid::BeginFrame() {
@@ -139,6 +160,7 @@ void OccupancyGrid::SetFree(const core::CellIndex& c) {
   Cell& cell = cells_[geometry_.Flat(c)];
   cell.log_odds = clamp_min_;
   cell.stamp = frame_;
+  cell.free_from = kTwoPlaces;
 }
 
 void OccupancyGrid::LimitSide(int max_side_cells) {

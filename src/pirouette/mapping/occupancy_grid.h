@@ -31,19 +31,24 @@ struct OccupancyOptions {
   double blind_probability = 0.6;
   double clamp_min_probability = 0.12;  // log-odds never go below this one's (OctoMap)
   double clamp_max_probability = 0.97;  // nor above this one's
-  // A cell is solid (OccupancyGrid::Solid) once it sits at the clamp above
-  // and hits reached it from two viewpoints at least this far apart
-  // (metres); 0 turns solidity off. A phantom hit (a vertical edge cutting a
-  // column of a tilted camera's picture, a wall a few centimetres off taken
-  // for the floor) repeats from one place but lands elsewhere from another;
-  // a wall's face is hit wherever it is seen from. Two stops of a robot of
-  // the paper's size are about this far apart at the least.
-  double solid_baseline_m = 0.15;
+  // Two places: viewpoints at least this far apart (metres). A cell is
+  // solid (OccupancyGrid::Solid) once it sits at the clamp above and hits
+  // reached it from two places; the map of record (ToMapOfRecord) calls a
+  // cell free only once misses reached it from two places. 0 turns both rules
+  // off (the paper's plain Bayes grid). What one place sees can be wrong in a
+  // way that repeats from there but not from elsewhere: a phantom hit (a
+  // vertical edge cutting a column of a tilted camera's picture, a wall a few
+  // centimetres off taken for the floor) lands elsewhere from another place,
+  // and a wall that passes for the floor when seen close maps a fan of free
+  // cells beyond it that no other place sees; a wall's face is hit, and open
+  // floor seen free, wherever it is seen from. Two stops of a robot of the
+  // paper's size are about this far apart at the least.
+  double two_places_m = 0.15;
 
   // Throws std::invalid_argument naming the field unless every probability is
   // in (0, 1), miss < 0.5 < hit, blind > 0.5, clamp_min < kFreeThreshold and
   // clamp_max > kOccupiedThreshold (else no cell could ever read free or
-  // occupied), and solid_baseline_m is finite and >= 0.
+  // occupied), and two_places_m is finite, >= 0 and under 1 km.
   void Check() const;
 };
 
@@ -139,7 +144,7 @@ class OccupancyGrid {
            (cell.log_odds == blind_cap_ || cell.log_odds <= one_hit_);
   }
   // Whether the cell is a wall seen for sure: at the log-odds clamp above
-  // and hit from two viewpoints at least OccupancyOptions::solid_baseline_m
+  // and hit from two viewpoints at least OccupancyOptions::two_places_m
   // apart (BeginFrame(viewpoint)). The sensor model does not see through a
   // solid cell (InsertProfile). False off the grid and with solidity off.
   bool Solid(const core::CellIndex& c) const {
@@ -161,6 +166,21 @@ class OccupancyGrid {
   bool SolidBlockAt(std::size_t flat_block) const { return solid_blocks_[flat_block] != 0; }
   // The whole grid by State(), on the same geometry.
   TrinaryMap ToTrinary() const;
+  // The map a run writes out and publishes (map.pgm, /map, the live view,
+  // its evaluation): ToTrinary(), except that a free cell not yet seen free
+  // from two places (OccupancyOptions::two_places_m; FreeFromTwoPlaces) is
+  // unknown. The explorer plans on what one place saw (it must move through
+  // the floor it just saw); the record claims only floor seen free twice.
+  TrinaryMap ToMapOfRecord() const;
+  // Whether misses reached the cell from two places, or it was set free
+  // (SetFree); true for every cell with the rule off (two_places_m 0).
+  bool FreeFromTwoPlaces(const core::CellIndex& c) const {
+    return options_.two_places_m <= 0.0 ||
+           (geometry_.Contains(c) && cells_[geometry_.Flat(c)].free_from == kTwoPlaces);
+  }
+  // Whether the cell is free (State) but seen free from one place only, and
+  // a miss from `viewpoint` (world metres) would make it free from two places.
+  bool WouldCorroborate(const core::CellIndex& c, const Eigen::Vector2d& viewpoint) const;
   // The grid as an explorer reads it: unknown is only what no update ever
   // touched. A touched cell between the thresholds (a hit and a miss that
   // cancel, or a blind area) counts as occupied when its log-odds are above
@@ -200,8 +220,9 @@ class OccupancyGrid {
   int max_side_cells() const { return max_side_cells_; }
 
   // Starts a new frame: from now on each cell takes at most one update until
-  // the next call. Its hits count toward solidity (Solid) with the viewpoint
-  // they were seen from (world metres); hits of a frame begun without one
+  // the next call. Its hits count toward solidity (Solid), and its misses
+  // toward the map of record's free (FreeFromTwoPlaces), with the viewpoint
+  // they were seen from (world metres); those of a frame begun without one
   // (a confirmation, a test) do not.
   void BeginFrame();
   void BeginFrame(const Eigen::Vector2d& viewpoint);
@@ -234,6 +255,13 @@ class OccupancyGrid {
         break;
       case CellUpdate::kMiss:
         cell.log_odds = std::max(cell.log_odds + miss_, clamp_min_);
+        if (viewpoint_ != kNoPlace && cell.free_from != kTwoPlaces) {
+          if (cell.free_from == kNoPlace) {
+            cell.free_from = viewpoint_;
+          } else if (FarApart(cell.free_from, viewpoint_)) {
+            cell.free_from = kTwoPlaces;
+          }
+        }
         break;
       case CellUpdate::kBlind:
         // Only a cell no reading ever touched takes it (stamp was 0).
@@ -255,6 +283,8 @@ class OccupancyGrid {
     // Where the first hit was seen from (a viewpoint code, see EncodePlace),
     // kNoPlace before any, kTwoPlaces once a hit came from far enough away.
     std::uint32_t seen_from = kNoPlace;
+    // The same for misses (kTwoPlaces also for a cell set free).
+    std::uint32_t free_from = kNoPlace;
   };
   // A viewpoint rounded to kPlaceQuantumM on each axis, 16 bits each
   // (clamped to ±32,766 quanta: ±1.6 km), never either marker.
@@ -296,7 +326,7 @@ class OccupancyGrid {
   float clamp_max_;
   float occupied_above_;                // logit(kOccupiedThreshold)
   float free_below_;                    // logit(kFreeThreshold)
-  int baseline_quanta_squared_;         // solid_baseline_m² in kPlaceQuantumM², at least 1
+  int baseline_quanta_squared_;         // two_places_m² in kPlaceQuantumM², at least 1
   std::uint32_t viewpoint_ = kNoPlace;  // the frame's, or kNoPlace
   std::uint32_t frame_ = 1;
   std::vector<Cell> cells_;  // row-major, geometry_.CellCount()

@@ -65,10 +65,10 @@ TEST(OccupancyOptions, RefusalsNameTheField) {
   o.clamp_max_probability = 1.0;
   EXPECT_NE(Refusal(o).find("clamp_max_probability"), std::string::npos);
   o = {};
-  o.solid_baseline_m = -0.1;
-  EXPECT_NE(Refusal(o).find("solid_baseline_m"), std::string::npos);
-  o.solid_baseline_m = nan;
-  EXPECT_NE(Refusal(o).find("solid_baseline_m"), std::string::npos);
+  o.two_places_m = -0.1;
+  EXPECT_NE(Refusal(o).find("two_places_m"), std::string::npos);
+  o.two_places_m = nan;
+  EXPECT_NE(Refusal(o).find("two_places_m"), std::string::npos);
   o.clamp_max_probability = 1.0;
   EXPECT_THROW(OccupancyGrid(GridGeometry(0.01, {0, 0}, 2, 2), o), std::invalid_argument);
 }
@@ -352,12 +352,77 @@ TEST(OccupancyGrid, RestoreMakesTheGridWhatItWasWhenThePartWasCut) {
 }
 
 // Hits `c` in `frames` frames of their own, seen from `viewpoint`.
-void HitFrom(OccupancyGrid& grid, const CellIndex& c, const Eigen::Vector2d& viewpoint,
-             int frames) {
+void UpdateFrom(OccupancyGrid& grid, const CellIndex& c, const Eigen::Vector2d& viewpoint,
+                int frames, CellUpdate update) {
   for (int i = 0; i < frames; ++i) {
     grid.BeginFrame(viewpoint);
-    ASSERT_TRUE(grid.Apply(c, CellUpdate::kHit));
+    ASSERT_TRUE(grid.Apply(c, update));
   }
+}
+
+void HitFrom(OccupancyGrid& grid, const CellIndex& c, const Eigen::Vector2d& viewpoint,
+             int frames) {
+  UpdateFrom(grid, c, viewpoint, frames, CellUpdate::kHit);
+}
+
+void MissFrom(OccupancyGrid& grid, const CellIndex& c, const Eigen::Vector2d& viewpoint,
+              int frames) {
+  UpdateFrom(grid, c, viewpoint, frames, CellUpdate::kMiss);
+}
+
+TEST(OccupancyGrid, TheMapOfRecordCallsFreeOnlyWhatTwoPlacesSawFree) {
+  const CellIndex c{4, 4};
+  const auto record = [&c](const OccupancyGrid& g) {
+    return g.ToMapOfRecord().cells[g.geometry().Flat(c)];
+  };
+  // Seen free from one place, however often: free to the explorer, unknown on record.
+  OccupancyGrid grid = SmallGrid();
+  MissFrom(grid, c, {0.0, 0.0}, 10);
+  EXPECT_EQ(grid.State(c), CellState::kFree);
+  EXPECT_FALSE(grid.FreeFromTwoPlaces(c));
+  EXPECT_EQ(record(grid), CellState::kUnknown);
+  EXPECT_EQ(grid.ToMapOfRecord().cells[grid.geometry().Flat({0, 0})], CellState::kUnknown);
+  // A second place nearer than the baseline (0.15 m), or a frame without one: still not.
+  MissFrom(grid, c, {0.1, 0.0}, 1);
+  grid.BeginFrame();
+  ASSERT_TRUE(grid.Apply(c, CellUpdate::kMiss));
+  EXPECT_EQ(record(grid), CellState::kUnknown);
+  // From far enough: free on record, and it stays so while the cell is free.
+  MissFrom(grid, c, {0.0, 0.2}, 1);
+  EXPECT_TRUE(grid.FreeFromTwoPlaces(c));
+  EXPECT_EQ(record(grid), CellState::kFree);
+  HitFrom(grid, c, {0.0, 0.0}, 4);
+  EXPECT_EQ(record(grid), CellState::kOccupied);
+  // Hits from two places do not make a cell free from two places.
+  OccupancyGrid hit = SmallGrid();
+  HitFrom(hit, c, {0.0, 0.0}, 1);
+  HitFrom(hit, c, {1.0, 0.0}, 1);
+  MissFrom(hit, c, {0.0, 0.0}, 10);
+  EXPECT_EQ(hit.State(c), CellState::kFree);
+  EXPECT_EQ(record(hit), CellState::kUnknown);
+  // Where the robot stood is free for certain.
+  OccupancyGrid stood = SmallGrid();
+  stood.SetFree(c);
+  EXPECT_EQ(record(stood), CellState::kFree);
+  // Kept through a crop and a restore.
+  const OccupancyGrid part = grid.CroppedToKnown(0);
+  EXPECT_EQ(part.ToMapOfRecord()
+                .cells[part.geometry().Flat(part.geometry().CellOf(grid.geometry().CellCentre(c)))],
+            CellState::kOccupied);
+  OccupancyGrid restored = SmallGrid();
+  MissFrom(restored, c, {0.0, 0.0}, 4);
+  MissFrom(restored, c, {1.0, 0.0}, 1);
+  const OccupancyGrid freed = restored.CroppedToKnown(0);
+  OccupancyGrid again = SmallGrid();
+  again.Restore(freed);
+  EXPECT_EQ(record(again), CellState::kFree);
+  // The rule off: the map of record is the trinary map.
+  OccupancyOptions off;
+  off.two_places_m = 0.0;
+  OccupancyGrid plain(GridGeometry(0.01, {-0.05, -0.05}, 10, 10), off);
+  MissFrom(plain, c, {0.0, 0.0}, 10);
+  EXPECT_TRUE(plain.FreeFromTwoPlaces(c));
+  EXPECT_EQ(plain.ToMapOfRecord().cells, plain.ToTrinary().cells);
 }
 
 TEST(OccupancyGrid, SolidIsAtTheClampAndHitFromTwoPlaces) {
@@ -391,7 +456,7 @@ TEST(OccupancyGrid, SolidIsAtTheClampAndHitFromTwoPlaces) {
   EXPECT_FALSE(none.Solid(c));
   // Solidity off.
   OccupancyOptions off;
-  off.solid_baseline_m = 0.0;
+  off.two_places_m = 0.0;
   OccupancyGrid never(GridGeometry(0.01, {-0.05, -0.05}, 10, 10), off);
   HitFrom(never, c, {0.0, 0.0}, 5);
   HitFrom(never, c, {1.0, 0.0}, 5);

@@ -326,7 +326,7 @@ double CheckRay(const OccupancyGrid& grid, const Eigen::Vector2d& from, Ray& r, 
 // (VisitBisected, with how far each was checked).
 std::size_t StopAtSolidCells(const OccupancyGrid& grid, const Eigen::Vector2d& from,
                              std::vector<Ray>& rays) {
-  if (!(grid.options().solid_baseline_m > 0.0)) return 0;  // none is ever solid
+  if (!(grid.options().two_places_m > 0.0)) return 0;  // none is ever solid
   std::size_t stopped = 0;
   VisitBisected(
       rays, [](const Ray& r) { return r.checked; },

@@ -49,7 +49,7 @@ CheckpointWriter::~CheckpointWriter() { Finish(); }
 void CheckpointWriter::Publish(const RunSnapshot& snapshot) {
   if (snapshot.frames <= frames_taken_) return;
   const auto start = std::chrono::steady_clock::now();
-  Pending next{SeenPart(snapshot.grid).ToTrinary(),
+  Pending next{SeenPart(snapshot.grid).ToMapOfRecord(),
                CheckpointRunJson(run_base_, snapshot).dump(2) + "\n"};
   {
     const std::lock_guard<std::mutex> lock(mutex_);

@@ -157,7 +157,7 @@ mapping::OccupancyGrid SeenPart(const mapping::OccupancyGrid& grid) {
 mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const ExplorationResult& result) {
   const std::filesystem::path out(out_dir);
   const mapping::OccupancyGrid seen = SeenPart(result.grid);
-  mapping::TrinaryMap map = seen.ToTrinary();
+  mapping::TrinaryMap map = seen.ToMapOfRecord();
   io::WriteRosMap(map, (out / "map.yaml").string());
   io::WriteColourMap(result.colour_map.On(map.geometry),
                      io::ColourMapPathFor((out / "map.yaml").string()));

@@ -33,6 +33,11 @@ constexpr int kFailuresPerGiveUp = 4;
 // Plans in a row after which the robot had not moved: a guard against a
 // planning loop that never moves (no shipped world comes near it).
 constexpr int kMaxIdlePlans = 500;
+// Trips a run makes at most to see again from a second place the floor one
+// place saw free (Explorer::CorroborationMap), as a fraction of the
+// pirouettes made before the first: a bound on what they cost (in a maze,
+// whose corridors each stop sees alone, they would double the run).
+constexpr int kCorroborationTripsPerPirouettes = 4;
 // Turns smaller than this are not made (radians).
 constexpr double kMinTurnRad = 1e-9;
 // A waypoint is reached within this many cells; a straight move that made
@@ -159,6 +164,17 @@ void Explorer::Loop() {
       plan = planner_->Next(VerificationMap(), Pose());
       verifying = plan.has_value();
     }
+    bool corroborating = false;  // the plan goes to see from a second place what one saw free
+    if (!plan && !corroboration_budget_) {
+      corroboration_budget_ = (result_.pirouettes + kCorroborationTripsPerPirouettes - 1) /
+                              kCorroborationTripsPerPirouettes;
+    }
+    if (!plan && corroboration_trips_ < corroboration_budget_.value_or(0)) {
+      run::StageTimer timer(result_.times.plan_s);
+      plan = planner_->Next(CorroborationMap(), Pose());
+      corroborating = plan.has_value();
+      if (corroborating) ++corroboration_trips_;
+    }
     if (!plan) {
       plan_.clear();
       if (!StepAwayToSeeNearby()) result_.status = "complete";
@@ -183,7 +199,10 @@ void Explorer::Loop() {
       Pirouette();
       // It has looked again: what the evidence opened is planned as usual,
       // and the goal is not checked again.
-      if (verifying) planner_->ReportUnreachable(*plan);
+      if (verifying || corroborating) planner_->ReportUnreachable(*plan);
+    } else if (outcome == FollowOutcome::kBlocked && corroborating) {
+      // Nothing was left to explore: a second look is not worth a stuck run.
+      planner_->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kBlocked) {
       if (++failures % kFailuresPerGiveUp == 0) planner_->ReportUnreachable(*plan);
       if (failures >= kMaxFailures) {
@@ -380,6 +399,18 @@ mapping::TrinaryMap Explorer::VerificationMap() const {
       if ((g.CellCentre(c) - here).norm() <= near) continue;
       state = mapping::CellState::kFree;
     }
+  }
+  return map;
+}
+
+mapping::TrinaryMap Explorer::CorroborationMap() const {
+  mapping::TrinaryMap map = PlanningMap();
+  const mapping::OccupancyGrid& occupancy = mapper_.grid();
+  const core::GridGeometry& g = map.geometry;
+  const Eigen::Vector2d here = Pose().translation();
+  for (std::size_t i = 0; i < map.cells.size(); ++i) {
+    if (map.cells[i] != mapping::CellState::kFree) continue;
+    if (occupancy.WouldCorroborate(g.Unflat(i), here)) map.cells[i] = mapping::CellState::kUnknown;
   }
   return map;
 }

@@ -104,6 +104,16 @@ class Explorer {
   // their evidence: the camera cannot look at them from here.
   mapping::TrinaryMap VerificationMap() const;
 
+  // The planning map in which the floor seen free from one place only, from
+  // far enough away that a look from here would make it free from two
+  // (OccupancyGrid::WouldCorroborate), counts as unknown: for a plan when
+  // there is nothing else to explore, so that the map of record
+  // (OccupancyGrid::ToMapOfRecord), which calls free only what two places saw
+  // free, covers the floor. Each such goal is tried once: given up once the
+  // robot has looked all round there, or at once when a look blocks the way;
+  // at most a quarter as many trips as pirouettes before the first.
+  mapping::TrinaryMap CorroborationMap() const;
+
   // A plan out of the camera's blind area at the robot's feet, when the
   // planner found none because the robot's own coarse cell is blocked: where
   // a view was filled by something near (a wall a few centimetres off), the
@@ -215,6 +225,8 @@ class Explorer {
   core::Pose2 start_pose_;
   std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing
   int step_aways_ = 0;
+  int corroboration_trips_ = 0;
+  std::optional<int> corroboration_budget_;    // set when the trips begin
   bool looked_since_drive_ = false;            // a frame was taken where the robot stands
   std::vector<std::size_t> pirouette_frames_;  // each pirouette's first frame
   Clock::time_point start_;

@@ -45,7 +45,7 @@ struct MapperSetup {
 
 // The map's longest side by default, in cells: 41 m at 1 cm, 82 m at 2 cm,
 // larger than any floor the explorer has mapped (docs/measurements.md), and a
-// grid of 4096² cells takes 192 MiB (12 bytes a cell).
+// grid of 4096² cells takes 256 MiB (16 bytes a cell).
 inline constexpr int kDefaultMaxMapCells = 4096;
 
 // The side limit of a setup's map, metres.

@@ -101,7 +101,7 @@ void LiveViewPublisher::Publish(const RunSnapshot& snapshot) {
   const std::uint64_t now = NowNs();
   if (snapshot.frames != published_frames_) {
     published_frames_ = snapshot.frames;
-    server_->Publish(kMap, Cdr(MapMessage(SeenPart(snapshot.grid).ToTrinary(), stamp)), now);
+    server_->Publish(kMap, Cdr(MapMessage(SeenPart(snapshot.grid).ToMapOfRecord(), stamp)), now);
     if (!snapshot.bgr.empty()) {
       server_->Publish(
           kFloor, Cdr(FloorJpegMessage(FloorPicture(snapshot.bgr, snapshot.floor_mask), stamp)),

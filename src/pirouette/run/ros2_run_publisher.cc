@@ -47,7 +47,7 @@ void Ros2RunPublisher::Publish(const RunSnapshot& snapshot) {
   const auto stamp = ros2::RosTime(std::chrono::system_clock::now());
   if (snapshot.frames != published_frames_) {
     published_frames_ = snapshot.frames;
-    writers_->map.Write(*MapMessage(SeenPart(snapshot.grid).ToTrinary(), stamp));
+    writers_->map.Write(*MapMessage(SeenPart(snapshot.grid).ToMapOfRecord(), stamp));
     if (!snapshot.bgr.empty()) {
       writers_->floor.Write(
           *FloorImageMessage(FloorPicture(snapshot.bgr, snapshot.floor_mask), stamp));

@@ -40,9 +40,10 @@ TEST(Ros2RunPublisher, PublishesASnapshotAsRos2Messages) {
   ASSERT_TRUE(WaitUntil([&] { return tf.MatchedWriters() == 1 && plan.MatchedWriters() == 1; }));
 
   mapping::OccupancyGrid grid(core::GridGeometry(0.05, Eigen::Vector2d(-1.0, -1.0), 40, 40));
-  // One occupied cell low in the map and a free one above it, seen often.
+  // One occupied cell low in the map and a free one above it, seen often from
+  // two places (the map of record calls free only what two places saw free).
   for (int i = 0; i < 10; ++i) {
-    grid.BeginFrame();
+    grid.BeginFrame(Eigen::Vector2d(0.5 * (i % 2), 0.0));
     grid.Apply({10, 5}, mapping::CellUpdate::kHit);
     grid.Apply({10, 30}, mapping::CellUpdate::kMiss);
   }

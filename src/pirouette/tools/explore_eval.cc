@@ -113,7 +113,7 @@ void ExploreWorld(const sim::World& world, const ExploreEvalRequest& request,
       run.planner = planner;
       run.seed = seed;
       run.status = result.status;
-      run.eval = eval::EvaluateMap(result.grid.ToTrinary(), world);
+      run.eval = eval::EvaluateMap(result.grid.ToMapOfRecord(), world);
       run.cell_m = result.grid.geometry().resolution();
       run.path_length_m = result.path_length_m;
       run.stops = result.pirouettes;
