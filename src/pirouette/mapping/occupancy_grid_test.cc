@@ -351,7 +351,7 @@ TEST(OccupancyGrid, RestoreMakesTheGridWhatItWasWhenThePartWasCut) {
   EXPECT_NO_THROW(OccupancyGrid(core::GridGeometry(0.1, {-1.0, -1.0}, 20, 20)).Restore(small));
 }
 
-// Hits `c` in `frames` frames of their own, seen from `viewpoint`.
+// Applies `update` to `c` in `frames` frames of their own, seen from `viewpoint`.
 void UpdateFrom(OccupancyGrid& grid, const CellIndex& c, const Eigen::Vector2d& viewpoint,
                 int frames, CellUpdate update) {
   for (int i = 0; i < frames; ++i) {
@@ -400,6 +400,15 @@ TEST(OccupancyGrid, TheMapOfRecordCallsFreeOnlyWhatTwoPlacesSawFree) {
   MissFrom(hit, c, {0.0, 0.0}, 10);
   EXPECT_EQ(hit.State(c), CellState::kFree);
   EXPECT_EQ(record(hit), CellState::kUnknown);
+  // A look from far enough from the first place would corroborate; from near it, not.
+  OccupancyGrid once = SmallGrid();
+  MissFrom(once, c, {0.0, 0.0}, 10);
+  EXPECT_TRUE(once.WouldCorroborate(c, {0.2, 0.0}));
+  EXPECT_FALSE(once.WouldCorroborate(c, {0.1, 0.0}));
+  EXPECT_FALSE(once.WouldCorroborate({0, 0}, {0.2, 0.0}));  // never seen
+  EXPECT_FALSE(grid.WouldCorroborate(c, {1.0, 1.0}));       // occupied now
+  MissFrom(once, c, {0.2, 0.0}, 1);
+  EXPECT_FALSE(once.WouldCorroborate(c, {1.0, 0.0}));  // already free from two places
   // Where the robot stood is free for certain.
   OccupancyGrid stood = SmallGrid();
   stood.SetFree(c);
