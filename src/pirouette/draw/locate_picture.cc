@@ -26,15 +26,7 @@ cv::Mat3b DrawLocatePicture(const mapping::TrinaryMap& map,
                             const std::vector<localize::LocateTrial>& trials, double coarse_cell_m,
                             int target_width_px) {
   const core::GridGeometry& g = map.geometry;
-  MapCanvas canvas = MapCanvas::Of(
-      g,
-      [&](const core::CellIndex& c) -> std::uint8_t {
-        const mapping::CellState s = map.At(c);
-        return s == mapping::CellState::kFree       ? 255
-               : s == mapping::CellState::kOccupied ? 0
-                                                    : kUnknownGrey;
-      },
-      target_width_px);
+  MapCanvas canvas = MapCanvas::OfTrinary(map, target_width_px);
   cv::Mat3b& image = canvas.image;
   const int scale = canvas.scale;
   const auto pixel = [&](const Eigen::Vector2d& p) { return canvas.Pixel(p); };

@@ -33,6 +33,40 @@ MapCanvas MapCanvas::Of(const core::GridGeometry& geometry,
   return canvas;
 }
 
+MapCanvas MapCanvas::OfTrinary(const mapping::TrinaryMap& map, int target_width_px) {
+  return Of(
+      map.geometry,
+      [&map](const core::CellIndex& c) -> std::uint8_t {
+        switch (map.At(c)) {
+          case mapping::CellState::kFree:
+            return 255;
+          case mapping::CellState::kOccupied:
+            return 0;
+          case mapping::CellState::kUnknown:
+            break;
+        }
+        return kUnknownGrey;
+      },
+      target_width_px);
+}
+
+cv::Mat3b DrawMarkedMap(const mapping::TrinaryMap& map,
+                        const std::function<const cv::Vec3b*(const core::CellIndex&)>& mark,
+                        int target_width_px) {
+  const MapCanvas canvas = MapCanvas::OfTrinary(map, target_width_px);
+  const core::GridGeometry& g = map.geometry;
+  cv::Mat3b image = canvas.image;
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) {
+      const cv::Vec3b* colour = mark({x, y});
+      if (colour == nullptr) continue;
+      const int row = (g.height() - 1 - y) * canvas.scale;
+      image(cv::Rect(x * canvas.scale, row, canvas.scale, canvas.scale)).setTo(*colour);
+    }
+  }
+  return image;
+}
+
 cv::Point MapCanvas::Pixel(const Eigen::Vector2d& p_m) const {
   const double u = (p_m.x() - geometry.origin().x()) / geometry.resolution() * scale;
   const double v =

@@ -109,47 +109,24 @@ JudgedMap JudgeMap(const mapping::TrinaryMap& map, const sim::World& world) {
 
 cv::Mat3b DrawJudgedMap(const mapping::TrinaryMap& map, const JudgedMap& judged,
                         int target_width_px) {
-  const core::GridGeometry& g = map.geometry;
-  if (judged.verdicts.size() != g.CellCount()) {
+  if (judged.verdicts.size() != map.geometry.CellCount()) {
     throw std::invalid_argument("DrawJudgedMap: the verdicts do not match the map's geometry");
   }
-  const draw::MapCanvas canvas = draw::MapCanvas::Of(
-      g,
-      [&](const core::CellIndex& c) -> std::uint8_t {
-        switch (map.At(c)) {
-          case CellState::kFree:
-            return 255;
-          case CellState::kOccupied:
-            return 0;
-          case CellState::kUnknown:
-            break;
+  return draw::DrawMarkedMap(
+      map,
+      [&](const core::CellIndex& c) -> const cv::Vec3b* {
+        switch (judged.verdicts[map.geometry.Flat(c)]) {
+          case CellVerdict::kFalseFree:
+            return &draw::kFalseFreeColour;
+          case CellVerdict::kFalseOccupied:
+            return &draw::kFalseOccupiedColour;
+          case CellVerdict::kMissedFloor:
+            return &draw::kMissedFloorColour;
+          default:
+            return nullptr;
         }
-        return draw::kUnknownGrey;
       },
       target_width_px);
-  cv::Mat3b image = canvas.image;
-  for (int y = 0; y < g.height(); ++y) {
-    for (int x = 0; x < g.width(); ++x) {
-      const cv::Vec3b* colour = nullptr;
-      switch (judged.verdicts[g.Flat({x, y})]) {
-        case CellVerdict::kFalseFree:
-          colour = &draw::kFalseFreeColour;
-          break;
-        case CellVerdict::kFalseOccupied:
-          colour = &draw::kFalseOccupiedColour;
-          break;
-        case CellVerdict::kMissedFloor:
-          colour = &draw::kMissedFloorColour;
-          break;
-        default:
-          break;
-      }
-      if (colour == nullptr) continue;
-      const int row = (g.height() - 1 - y) * canvas.scale;
-      image(cv::Rect(x * canvas.scale, row, canvas.scale, canvas.scale)).setTo(*colour);
-    }
-  }
-  return image;
 }
 
 nlohmann::json MapEvaluationToJson(const MapEvaluation& evaluation) {

@@ -70,7 +70,9 @@ JudgedMap JudgeMap(const mapping::TrinaryMap& map, const sim::World& world);
 // Where a map is wrong, as a picture a person looks at (`eval --picture`),
 // north up, whole pixels a cell (about target_width_px wide): free white,
 // occupied black, unknown mid grey, as map.png; false free cells red, false
-// occupied cells blue, reachable floor the map left unknown pale amber.
+// occupied cells blue, reachable floor the map left unknown pale amber (the
+// palette's; draw::DrawMarkedMap draws it). Throws std::invalid_argument
+// when the verdicts do not match the map's geometry.
 cv::Mat3b DrawJudgedMap(const mapping::TrinaryMap& map, const JudgedMap& judged,
                         int target_width_px = 800);
 

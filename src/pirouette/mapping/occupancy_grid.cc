@@ -118,12 +118,12 @@ bool OccupancyGrid::WouldCorroborate(const core::CellIndex& c,
 }
 
 TrinaryMap OccupancyGrid::ToMapOfRecord() const {
-  TrinaryMap map = ToTrinary();
-  if (options_.two_places_m <= 0.0) return map;
+  const bool two_places = options_.two_places_m > 0.0;
+  TrinaryMap map{geometry_, std::vector<CellState>(cells_.size())};
   for (std::size_t i = 0; i < cells_.size(); ++i) {
-    if (map.cells[i] == CellState::kFree && cells_[i].free_from != kTwoPlaces) {
-      map.cells[i] = CellState::kUnknown;
-    }
+    const CellState state = StateOf(cells_[i]);
+    const bool one_place = two_places && cells_[i].free_from != kTwoPlaces;
+    map.cells[i] = state == CellState::kFree && one_place ? CellState::kUnknown : state;
   }
   return map;
 }
