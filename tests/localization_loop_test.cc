@@ -4,7 +4,9 @@
 // nothing to correct, and it takes out most of the pose error 5% odometry
 // noise makes, and most of the false free cells with it. That table's goal
 // under noise (complete, false_free <= 0.01, wall error within 1.5x the
-// noise-free figure) is not met in every world, so not asserted.
+// noise-free figure) is not met in every world, so not asserted. Each map is
+// judged as map.pgm holds it (OccupancyGrid::ToMapOfRecord), as explore-eval
+// judges it.
 
 #include <gtest/gtest.h>
 
@@ -38,7 +40,7 @@ TEST(LocalizationLoopTest, TrackingWithoutOdometryNoiseKeepsTheMapTrue) {
   const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
   const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.0);
   EXPECT_EQ(result.status, "complete");
-  const eval::MapEvaluation eval = eval::EvaluateMap(result.grid.ToTrinary(), world);
+  const eval::MapEvaluation eval = eval::EvaluateMap(result.grid.ToMapOfRecord(), world);
   EXPECT_GE(eval.coverage, 0.95);
   EXPECT_LE(eval.false_free, 0.05);
   EXPECT_LE(eval.wall_error_m, 0.02);
@@ -60,8 +62,8 @@ TEST(LocalizationLoopTest, TrackingTakesOutMostOfThePoseErrorOfNoisyOdometry) {
   EXPECT_LT(scan.pose_error->mean_m, 0.5 * none.pose_error->mean_m);
   EXPECT_GT(scan.scan_matches, 0);
   EXPECT_EQ(scan.status, "complete");
-  const eval::MapEvaluation none_eval = eval::EvaluateMap(none.grid.ToTrinary(), world);
-  const eval::MapEvaluation scan_eval = eval::EvaluateMap(scan.grid.ToTrinary(), world);
+  const eval::MapEvaluation none_eval = eval::EvaluateMap(none.grid.ToMapOfRecord(), world);
+  const eval::MapEvaluation scan_eval = eval::EvaluateMap(scan.grid.ToMapOfRecord(), world);
   EXPECT_LE(scan_eval.false_free, 0.03);
   EXPECT_LT(scan_eval.false_free, 0.25 * none_eval.false_free);
   // Without tracking nothing is matched.
@@ -77,7 +79,7 @@ TEST(LocalizationLoopTest, TheGraphWithoutOdometryNoiseKeepsTheMapTrue) {
   const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/soccer_field.yaml");
   const ExplorationResult result = ExploreWith(world, LocalizeKind::kGraph, 0.0);
   EXPECT_EQ(result.status, "complete");
-  const eval::MapEvaluation eval = eval::EvaluateMap(result.grid.ToTrinary(), world);
+  const eval::MapEvaluation eval = eval::EvaluateMap(result.grid.ToMapOfRecord(), world);
   EXPECT_GE(eval.coverage, 0.98);
   EXPECT_LE(eval.false_free, 0.0005);
   EXPECT_LE(eval.wall_error_m, 0.01);
@@ -97,8 +99,8 @@ TEST(LocalizationLoopTest, TheGraphTakesOutMostOfThePoseErrorOfNoisyOdometry) {
   EXPECT_EQ(graph.status, "complete");
   EXPECT_LT(graph.pose_error->ate_rms_m, 0.2 * none.pose_error->ate_rms_m);
   EXPECT_GT(graph.scan_matches, 0);
-  const eval::MapEvaluation none_eval = eval::EvaluateMap(none.grid.ToTrinary(), world);
-  const eval::MapEvaluation graph_eval = eval::EvaluateMap(graph.grid.ToTrinary(), world);
+  const eval::MapEvaluation none_eval = eval::EvaluateMap(none.grid.ToMapOfRecord(), world);
+  const eval::MapEvaluation graph_eval = eval::EvaluateMap(graph.grid.ToMapOfRecord(), world);
   EXPECT_LE(graph_eval.false_free, 0.03);
   EXPECT_LT(graph_eval.false_free, 0.1 * none_eval.false_free);
 }
