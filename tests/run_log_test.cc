@@ -126,5 +126,52 @@ TEST_F(RunLogRoundTripTest, AGraphRunMapsAgainTheSame) {
   EXPECT_NE(Read("explore", "graph.g2o").find("VERTEX_SE2 0 "), std::string::npos);
 }
 
+// A log recorded without noise mapped under drift (`map --log
+// --odometry-noise`): the log's poses are the truth, so run.json gives the
+// pose error and the loop closures against it; the graph takes out most of
+// what the drift puts in; a seed gives the same map again, and a drift of
+// nothing the map the run made.
+TEST_F(RunLogRoundTripTest, ANoiseFreeLogMapsAgainUnderDriftAgainstItsOwnPoses) {
+  run::ExploreRequest explore;
+  explore.world_path = std::string(PIROUETTE_WORLDS_DIR) + "/soccer_field.yaml";
+  explore.out_dir = Path("explore");
+  explore.record_dir = Path("log");
+  explore.quiet = true;
+  const ExploreReport explored = RunExplore(explore);
+  ASSERT_EQ(explored.result.status, "complete");
+
+  run::MapLogRequest map;
+  map.log_dir = explore.record_dir;
+  map.quiet = true;
+  map.localize = "graph";
+  map.odometry_noise = core::OdometryNoise{0.05, 0.05, 0.02, 0.01};
+  map.seed = 3;
+  map.out_dir = Path("graph");
+  const MapLogReport graph = RunMapLog(map);
+  map.out_dir = Path("again");
+  RunMapLog(map);
+  map.out_dir = Path("none");
+  map.localize = "none";
+  const MapLogReport none = RunMapLog(map);
+
+  ASSERT_TRUE(graph.run.contains("pose_error"));
+  ASSERT_TRUE(none.run.contains("pose_error"));
+  EXPECT_EQ(graph.run["odometry_noise"]["seed"], 3);
+  const double graph_ate = graph.run["pose_error"]["ate_rms_m"];
+  const double none_ate = none.run["pose_error"]["ate_rms_m"];
+  EXPECT_GT(none_ate, 0.05);  // 5% noise and a bias drift far over a run
+  EXPECT_LT(graph_ate, 0.5 * none_ate);
+  EXPECT_TRUE(graph.run["localization"]["loop_closures"].contains("correct"));
+  EXPECT_EQ(Read("again", "map.pgm"), Read("graph", "map.pgm"));
+  EXPECT_NE(Read("none", "map.pgm"), Read("graph", "map.pgm"));
+
+  map.out_dir = Path("still");
+  map.localize = "";
+  map.odometry_noise = core::OdometryNoise{};
+  const MapLogReport still = RunMapLog(map);
+  EXPECT_EQ(Read("still", "map.pgm"), Read("explore", "map.pgm"));
+  EXPECT_LT(static_cast<double>(still.run["pose_error"]["ate_rms_m"]), 0.005);
+}
+
 }  // namespace
 }  // namespace pirouette::run

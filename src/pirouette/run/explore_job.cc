@@ -61,24 +61,8 @@ nlohmann::json RunJsonBase(const ExploreRequest& request) {
   return run;
 }
 
-nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& result,
-                       const nlohmann::json& eval) {
-  nlohmann::json run = RunJsonBase(request);
-  run["status"] = result.status;
-  if (!result.reason.empty()) run["reason"] = result.reason;
-  run["moves"] = result.moves;
-  run["turns"] = result.turns;
-  run["pirouettes"] = result.pirouettes;
-  run["frames"] = result.frames;
-  run["path_length_m"] = Round(result.path_length_m, 1e-4);
-  run["rotation_deg"] = Round(result.rotation_deg, 0.1);
-  run["wall_time_s"] = Round(result.wall_time_s, 1e-3);
-  run["stage_time_s"] = {{"render", Round(result.times.render_s, 1e-4)},
-                         {"perceive", Round(result.times.perceive_s, 1e-4)},
-                         {"update", Round(result.times.update_s, 1e-4)},
-                         {"plan", Round(result.times.plan_s, 1e-4)},
-                         {"localize", Round(result.times.localize_s, 1e-4)}};
-  if (request.options.localize == LocalizeKind::kGraph && result.graph) {
+nlohmann::json LocalizationJson(LocalizeKind localize, const ExplorationResult& result) {
+  if (localize == LocalizeKind::kGraph && result.graph) {
     double mean = 0.0;
     double most = 0.0;
     for (const double t : result.per_stop_s) {
@@ -101,24 +85,61 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
       loops["opportunities"] = recall->opportunities;
       loops["closed"] = recall->closed;
     }
-    run["localization"] = {
-        {"method", "graph"},
-        {"stops", result.graph->NodeCount()},
-        {"edges", result.graph->edges().size()},
-        {"scan_matches", result.scan_matches},
-        {"loop_closures", loops},
-        {"optimise_s", Round(result.optimise_s, 1e-4)},
-        {"per_stop_s", {{"mean", Round(mean, 1e-5)}, {"max", Round(most, 1e-5)}}},
-        {"rebuilds", result.rebuilds},
-        {"rebuild_s", Round(result.rebuild_s, 1e-4)}};
-  } else if (request.options.localize == LocalizeKind::kScan) {
-    run["localization"] = {
-        {"method", "scan"},
-        {"frames_matched", result.matches},
-        {"frames_corrected", result.corrections},
-        {"stops_scan_matched", result.scan_matches},
-        {"time_per_matched_frame_s",
-         result.matches > 0 ? Round(result.times.localize_s / result.matches, 1e-6) : 0.0}};
+    return {{"method", "graph"},
+            {"stops", result.graph->NodeCount()},
+            {"edges", result.graph->edges().size()},
+            {"scan_matches", result.scan_matches},
+            {"loop_closures", loops},
+            {"optimise_s", Round(result.optimise_s, 1e-4)},
+            {"per_stop_s", {{"mean", Round(mean, 1e-5)}, {"max", Round(most, 1e-5)}}},
+            {"rebuilds", result.rebuilds},
+            {"rebuild_s", Round(result.rebuild_s, 1e-4)}};
+  } else if (localize == LocalizeKind::kScan) {
+    return {{"method", "scan"},
+            {"frames_matched", result.matches},
+            {"frames_corrected", result.corrections},
+            {"stops_scan_matched", result.scan_matches},
+            {"time_per_matched_frame_s",
+             result.matches > 0 ? Round(result.times.localize_s / result.matches, 1e-6) : 0.0}};
+  }
+  return nullptr;
+}
+
+nlohmann::json OdometryNoiseJson(const core::OdometryNoise& noise) {
+  return {{"translation", noise.translation},
+          {"rotation", noise.rotation},
+          {"translation_bias", noise.translation_bias},
+          {"rotation_bias", noise.rotation_bias}};
+}
+
+nlohmann::json PoseErrorJson(const eval::PoseError& e) {
+  return {
+      {"ate_rms_m", Round(e.ate_rms_m, 1e-4)}, {"heading_rms_deg", Round(e.heading_rms_deg, 0.01)},
+      {"final_m", Round(e.final_m, 1e-4)},     {"final_deg", Round(e.final_deg, 0.01)},
+      {"mean_m", Round(e.mean_m, 1e-4)},       {"mean_deg", Round(e.mean_deg, 0.01)},
+      {"max_m", Round(e.max_m, 1e-4)}};
+}
+
+nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& result,
+                       const nlohmann::json& eval) {
+  nlohmann::json run = RunJsonBase(request);
+  run["status"] = result.status;
+  if (!result.reason.empty()) run["reason"] = result.reason;
+  run["moves"] = result.moves;
+  run["turns"] = result.turns;
+  run["pirouettes"] = result.pirouettes;
+  run["frames"] = result.frames;
+  run["path_length_m"] = Round(result.path_length_m, 1e-4);
+  run["rotation_deg"] = Round(result.rotation_deg, 0.1);
+  run["wall_time_s"] = Round(result.wall_time_s, 1e-3);
+  run["stage_time_s"] = {{"render", Round(result.times.render_s, 1e-4)},
+                         {"perceive", Round(result.times.perceive_s, 1e-4)},
+                         {"update", Round(result.times.update_s, 1e-4)},
+                         {"plan", Round(result.times.plan_s, 1e-4)},
+                         {"localize", Round(result.times.localize_s, 1e-4)}};
+  if (nlohmann::json localization = LocalizationJson(request.options.localize, result);
+      !localization.is_null()) {
+    run["localization"] = std::move(localization);
   }
   const auto pose_json = [](const core::Pose2& p) {
     return nlohmann::json::array(
@@ -130,16 +151,7 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
     run["final_pose"] = pose_json(result.path.back());
   }
   if (result.final_true_pose) run["final_true_pose"] = pose_json(*result.final_true_pose);
-  if (result.pose_error) {
-    const eval::PoseError& e = *result.pose_error;
-    run["pose_error"] = {{"ate_rms_m", Round(e.ate_rms_m, 1e-4)},
-                         {"heading_rms_deg", Round(e.heading_rms_deg, 0.01)},
-                         {"final_m", Round(e.final_m, 1e-4)},
-                         {"final_deg", Round(e.final_deg, 0.01)},
-                         {"mean_m", Round(e.mean_m, 1e-4)},
-                         {"mean_deg", Round(e.mean_deg, 0.01)},
-                         {"max_m", Round(e.max_m, 1e-4)}};
-  }
+  if (result.pose_error) run["pose_error"] = PoseErrorJson(*result.pose_error);
   run["blocked_looks"] = result.blocked_looks;
   run["backups"] = result.backups;
   if (!eval.is_null()) run["eval"] = eval;
@@ -398,13 +410,6 @@ class Checkpoints {
   CheckpointWriter writer_;
   std::string error_;
 };
-
-nlohmann::json OdometryNoiseJson(const core::OdometryNoise& noise) {
-  return {{"translation", noise.translation},
-          {"rotation", noise.rotation},
-          {"translation_bias", noise.translation_bias},
-          {"rotation_bias", noise.rotation_bias}};
-}
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "pirouette/core/odometry_noise.h"
 #include "pirouette/run/explorer.h"
 #include "pirouette/run/live_view_publisher.h"
 #include "pirouette/run/ros2_run_publisher.h"
@@ -79,6 +80,15 @@ mapping::TrinaryMap WriteMapOutputs(const std::string& out_dir, const Exploratio
 // The fields of run.json known before the run: format, world, seed, planner,
 // method, localize, robot.
 nlohmann::json RunJsonBase(const ExploreRequest& request);
+
+// run.json's `localization` object for a result mapped with `localize`
+// (graph: its stops, edges, loop closures and times; scan: its matches),
+// null for none.
+nlohmann::json LocalizationJson(LocalizeKind localize, const ExplorationResult& result);
+// run.json's `odometry_noise` object.
+nlohmann::json OdometryNoiseJson(const core::OdometryNoise& noise);
+// run.json's `pose_error` object.
+nlohmann::json PoseErrorJson(const eval::PoseError& error);
 
 // run.json (SPEC.md's `pirouette-run/1`) for a result; `eval` is the map's
 // evaluation object (null: none, no world).

@@ -103,19 +103,8 @@ ExplorationResult Explorer::Run() {
     for (std::size_t i = 0; i < result_.stops.size(); ++i) {
       result_.stops[i] = mapper_.FramePoses().at(pirouette_frames_[i]);
     }
-    result_.graph = graph->graph();
-    for (std::size_t k = 0; k < graph->FrameCount(); ++k) {
-      result_.frame_stops.push_back(graph->StopOf(k));
-    }
-    result_.loop_closures_accepted = graph->loop_closures_accepted();
-    result_.loop_reach_m = graph->OverlapReachM();
-    result_.loop_closures_rejected = graph->loop_closures_rejected();
-    result_.scan_matches = graph->scan_matches();
-    result_.optimise_s = graph->optimise_s();
-    result_.per_stop_s = graph->per_stop_s();
-    result_.rebuild_s = mapper_.rebuild_s();
-    result_.rebuilds = mapper_.rebuilds();
   }
+  TakeGraphOutcome(mapper_, result_);
   result_.final_frame_poses = mapper_.FramePoses();
   result_.wall_time_s = run::Seconds(Clock::now() - start_);
   result_.times.perceive_s = mapper_.perceive_s();
@@ -190,9 +179,12 @@ void Explorer::Loop() {
       continue;
     }
     const FollowOutcome outcome = Follow(*plan);
-    if (outcome == FollowOutcome::kReached && AtLastPirouette()) {
-      // The plan's waypoints were all where the robot stands (within a
-      // quarter cell): looking all round again would show nothing new.
+    if ((outcome == FollowOutcome::kReached && AtLastPirouette()) ||
+        (outcome == FollowOutcome::kBlocked && corroborating)) {
+      // Reached: the plan's waypoints were all where the robot stands
+      // (within a quarter cell), and looking all round again would show
+      // nothing new. Blocked on a second look: nothing was left to explore,
+      // and a second look is not worth a stuck run.
       planner_->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kReached) {
       failures = 0;
@@ -200,9 +192,6 @@ void Explorer::Loop() {
       // It has looked again: what the evidence opened is planned as usual,
       // and the goal is not checked again.
       if (verifying || corroborating) planner_->ReportUnreachable(*plan);
-    } else if (outcome == FollowOutcome::kBlocked && corroborating) {
-      // Nothing was left to explore: a second look is not worth a stuck run.
-      planner_->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kBlocked) {
       if (++failures % kFailuresPerGiveUp == 0) planner_->ReportUnreachable(*plan);
       if (failures >= kMaxFailures) {
@@ -502,6 +491,24 @@ ExplorationResult ExploreWithRobot(robot::Robot& robot, const RobotDescription& 
   }
   internal::Explorer explorer(robot, description, options, std::move(masks), observer);
   return explorer.Run();
+}
+
+void TakeGraphOutcome(const FrameMapper& mapper, ExplorationResult& result) {
+  const auto& graph = mapper.graph();
+  if (!graph) return;
+  result.graph = graph->graph();
+  result.frame_stops.clear();
+  for (std::size_t k = 0; k < graph->FrameCount(); ++k) {
+    result.frame_stops.push_back(graph->StopOf(k));
+  }
+  result.loop_closures_accepted = graph->loop_closures_accepted();
+  result.loop_reach_m = graph->OverlapReachM();
+  result.loop_closures_rejected = graph->loop_closures_rejected();
+  result.scan_matches = graph->scan_matches();
+  result.optimise_s = graph->optimise_s();
+  result.per_stop_s = graph->per_stop_s();
+  result.rebuild_s = mapper.rebuild_s();
+  result.rebuilds = mapper.rebuilds();
 }
 
 }  // namespace pirouette::run

@@ -17,4 +17,10 @@ ExplorationResult ExploreWithRobot(robot::Robot& robot, const RobotDescription& 
                                    const ExplorationOptions& options, FrameMasks masks,
                                    const ExplorationObserver& observer = {});
 
+// What the mapper's pose graph (if it keeps one) did, into `result`: the
+// graph, each frame's stop, the loop closures and scan matches, the overlap
+// reach, and the times of optimising and of making the map again. After
+// mapper.Finish(). Nothing without the graph.
+void TakeGraphOutcome(const FrameMapper& mapper, ExplorationResult& result);
+
 }  // namespace pirouette::run

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,10 +10,13 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/eval/loop_closure_check.h"
 #include "pirouette/eval/map_evaluation.h"
+#include "pirouette/eval/pose_error.h"
 #include "pirouette/io/atomic_file.h"
 #include "pirouette/io/run_log.h"
 #include "pirouette/io/world_file.h"
@@ -20,6 +24,7 @@
 #include "pirouette/run/frame_mapper.h"
 #include "pirouette/run/progress_line.h"
 #include "pirouette/run/run_watchers.h"
+#include "pirouette/sim/drifted_odometry.h"
 #include "pirouette/vision/floor_segmenter.h"
 
 namespace pirouette::run {
@@ -102,16 +107,17 @@ LocalizeKind LocalizeOf(const MapLogRequest& request, const io::RunLog& log,
 
 // Maps the log's frames in order, as the run did; the result's grid, path
 // (the frames' map poses, where they moved), frames and times.
-ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
-                         vision::SegmentationMethod method, bool quiet, const RunWatchers& watchers,
-                         const std::atomic<bool>* stop_requested) {
+ExplorationResult Replay(const io::RunLog& log, const std::vector<core::Pose2>& odometry,
+                         const MapperSetup& setup, vision::SegmentationMethod method, bool quiet,
+                         const RunWatchers& watchers, const std::atomic<bool>* stop_requested) {
   const Clock::time_point start = Clock::now();
   std::unique_ptr<vision::FloorSegmenter> segmenter =
       vision::MakeFloorSegmenter(method, setup.camera);
-  FrameMapper mapper(setup, MasksOf(*segmenter), log.rows.front().odometry);
+  FrameMapper mapper(setup, MasksOf(*segmenter), odometry.front());
   ExplorationResult result;
   run::ProgressLine progress(quiet);
-  for (const io::RunLogRow& row : log.rows) {
+  for (std::size_t k = 0; k < log.rows.size(); ++k) {
+    const io::RunLogRow& row = log.rows[k];
     if (stop_requested != nullptr && stop_requested->load()) {
       result.status = "interrupted";
       break;
@@ -119,6 +125,7 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
     robot::Frame frame;
     try {
       frame = io::ReadLogFrame(log, row);
+      frame.odometry = odometry[k];
     } catch (const core::InputError& e) {
       // A frame missing or cut short ends the log there: what came before
       // is mapped (a log with no readable frame is bad input).
@@ -127,7 +134,7 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
       result.reason = fmt::format("{}; mapped the {} frames before it", e.what(), result.frames);
       break;
     }
-    if (row.contact) mapper.AddContact(row.odometry);
+    if (row.contact) mapper.AddContact(odometry[k]);
     std::optional<FrameMapper::Seen> added;
     try {
       added = mapper.AddFrame(frame);
@@ -159,7 +166,7 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
                          grid.geometry().resolution();
       at.elapsed_s = elapsed;
       const RunSnapshot snapshot{grid,     result.path, kNoStops,
-                                 kNoPlan,  seen.pose,   seen.pose * row.odometry.Inverse(),
+                                 kNoPlan,  seen.pose,   seen.pose * odometry[k].Inverse(),
                                  seen.bgr, seen.mask,   result.frames,
                                  at};
       for (const auto& watcher : watchers.all) watcher->Publish(snapshot);
@@ -169,13 +176,8 @@ ExplorationResult Replay(const io::RunLog& log, const MapperSetup& setup,
     });
   }
   mapper.Finish();
-  if (const auto& graph = mapper.graph()) {
-    result.path = graph->graph().poses();
-    result.graph = graph->graph();
-    result.loop_closures_accepted = graph->loop_closures_accepted();
-    result.loop_closures_rejected = graph->loop_closures_rejected();
-    result.scan_matches = graph->scan_matches();
-  }
+  if (const auto& graph = mapper.graph()) result.path = graph->graph().poses();
+  TakeGraphOutcome(mapper, result);
   result.final_frame_poses = mapper.FramePoses();
   if (result.status.empty() && !log.cut.empty()) {
     result.status = "truncated";
@@ -236,11 +238,36 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
                            "cannot create the output folder: " + error.message());
   }
 
+  // The odometry the frames are mapped at: the log's, or with
+  // --odometry-noise one drifted from it, the log's then the truth.
+  std::vector<core::Pose2> truth;
+  for (const io::RunLogRow& row : log.rows) truth.push_back(row.odometry);
+  std::vector<core::Pose2> odometry = truth;
+  if (request.odometry_noise) {
+    core::CheckOdometryNoise(*request.odometry_noise);
+    odometry = sim::DriftedOdometry(truth, *request.odometry_noise, request.seed);
+    if (setup.graph) {
+      ExplorationOptions options;
+      options.odometry_noise = request.odometry_noise;
+      setup.graph->odometry = GraphOdometryModel(options, &*request.odometry_noise);
+    }
+  }
+
   const RunWatchers watchers(request.ros2_publish, request.live_view);
   if (watchers.view != nullptr && request.on_view) request.on_view(watchers.view->endpoint());
-  MapLogReport report{Replay(log, setup, method, request.quiet, watchers, request.stop_requested),
-                      {}};
-  const ExplorationResult& result = report.result;
+  MapLogReport report{
+      Replay(log, odometry, setup, method, request.quiet, watchers, request.stop_requested), {}};
+  ExplorationResult& result = report.result;
+  if (request.odometry_noise) {
+    // The frames mapped, against the log's poses.
+    truth.resize(std::min(truth.size(), result.final_frame_poses.size()));
+    result.pose_error = eval::PoseErrorOf(result.final_frame_poses, truth);
+    if (result.graph) {
+      result.loop_closure_check = eval::CheckLoopClosures(*result.graph, result.frame_stops, truth);
+      result.loop_closure_recall = eval::CheckLoopClosureRecall(
+          *result.graph, result.frame_stops, truth, result.loop_reach_m, setup.graph->loop_path_m);
+    }
+  }
   const mapping::TrinaryMap map = WriteMapOutputs(request.out_dir, result);
   nlohmann::json& run = report.run;
   run["format"] = "pirouette-run/1";
@@ -256,6 +283,15 @@ MapLogReport RunMapLog(const MapLogRequest& request) {
   run["time_per_frame_s"] = Round(result.wall_time_s / result.frames, 1e-5);
   run["stage_time_s"] = {{"perceive", Round(result.times.perceive_s, 1e-4)},
                          {"update", Round(result.times.update_s, 1e-4)}};
+  run["localize"] = LocalizeKindName(localize);
+  if (nlohmann::json localization = LocalizationJson(localize, result); !localization.is_null()) {
+    run["localization"] = std::move(localization);
+  }
+  if (request.odometry_noise) {
+    run["odometry_noise"] = OdometryNoiseJson(*request.odometry_noise);
+    run["odometry_noise"]["seed"] = request.seed;
+  }
+  if (result.pose_error) run["pose_error"] = PoseErrorJson(*result.pose_error);
   if (world) run["eval"] = eval::MapEvaluationToJson(eval::EvaluateMap(map, *world));
   io::WriteFileAtomically((fs::path(request.out_dir) / "run.json").string(), run.dump(2) + "\n");
   watchers.Finish(map, result, request.stop_requested);

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "pirouette/core/odometry_noise.h"
 #include "pirouette/run/explorer.h"
 #include "pirouette/run/live_view_publisher.h"
 #include "pirouette/run/ros2_run_publisher.h"
@@ -23,6 +25,13 @@ struct MapLogRequest {
   std::string method;      // "default" | "paper"
   std::string localize;    // "scan" | "none"
   double max_map_m = 0.0;  // the map's longest side (0: kDefaultMaxMapCells cells)
+  // Set: the log's odometry is taken as the truth (record the log without
+  // noise) and the frames are mapped at the odometry a robot with this error
+  // would have reported (sim::DriftedOdometry, drawn from `seed`); run.json
+  // then gives the pose error and the loop closures against the truth. The
+  // pose graph's odometry model is this error, as in the simulator.
+  std::optional<core::OdometryNoise> odometry_noise;
+  std::uint64_t seed = 1;
   bool quiet = false;
   // Set: publish the map to ROS 2 over DDS frame by frame (Ros2RunPublisher).
   std::optional<Ros2PublishOptions> ros2_publish;
