@@ -105,8 +105,9 @@ LocalizeKind LocalizeOf(const MapLogRequest& request, const io::RunLog& log,
   return *localize;
 }
 
-// Maps the log's frames in order, as the run did; the result's grid, path
-// (the frames' map poses, where they moved), frames and times.
+// Maps the log's frames in order, as the run did, each at `odometry` (one
+// pose a row: the log's, or drifted from it); the result's grid, path (the
+// frames' map poses, where they moved), frames, times and the graph's outcome.
 ExplorationResult Replay(const io::RunLog& log, const std::vector<core::Pose2>& odometry,
                          const MapperSetup& setup, vision::SegmentationMethod method, bool quiet,
                          const RunWatchers& watchers, const std::atomic<bool>* stop_requested) {
