@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <unordered_map>
 #include <utility>
 
 #include "pirouette/core/angle.h"
@@ -212,10 +214,55 @@ core::Pose2 GraphTracker::AddOdometryEdge(int to, const Stop& stop) {
   return step;
 }
 
-std::optional<PoseGraphEdge> GraphTracker::MatchStop(int from, const std::vector<int>& references,
-                                                     int to, bool loop,
+int GraphTracker::AgreeingStop(const std::vector<int>& references, int to,
+                               const core::Pose2& map_T_to) const {
+  const double cell = options_.stop.scan.cell_m;
+  const auto cell_of = [cell](const Eigen::Vector2d& p) {
+    return Eigen::Vector2i(static_cast<int>(std::floor(p.x() / cell)),
+                           static_cast<int>(std::floor(p.y() / cell)));
+  };
+  const auto key = [](const Eigen::Vector2i& c) {
+    return (static_cast<std::int64_t>(c.x()) << 32) ^ static_cast<std::uint32_t>(c.y());
+  };
+  // Which reference stops have a hit in each cell.
+  std::unordered_map<std::int64_t, std::vector<int>> owners;
+  for (const int j : references) {
+    for (const Eigen::Vector2d& q : stops_[static_cast<std::size_t>(j)].hits) {
+      std::vector<int>& v = owners[key(cell_of(graph_.pose(j) * q))];
+      if (v.empty() || v.back() != j) v.push_back(j);
+    }
+  }
+  const int reach = static_cast<int>(std::ceil(options_.stop.scan.sigma_m / cell));
+  std::unordered_map<int, int> agreeing;
+  std::vector<int> near;
+  for (const Eigen::Vector2d& q : stops_[static_cast<std::size_t>(to)].hits) {
+    const Eigen::Vector2i c = cell_of(map_T_to * q);
+    near.clear();
+    for (int dx = -reach; dx <= reach; ++dx) {
+      for (int dy = -reach; dy <= reach; ++dy) {
+        const auto it = owners.find(key(c + Eigen::Vector2i(dx, dy)));
+        if (it == owners.end()) continue;
+        for (const int j : it->second) {
+          if (std::find(near.begin(), near.end(), j) == near.end()) near.push_back(j);
+        }
+      }
+    }
+    for (const int j : near) ++agreeing[j];
+  }
+  int best = -1;
+  int most = 0;
+  for (const auto& [j, n] : agreeing) {
+    if (n > most || (n == most && j > best)) {
+      best = j;
+      most = n;
+    }
+  }
+  return best;
+}
+
+std::optional<PoseGraphEdge> GraphTracker::MatchStop(int nearest,
+                                                     const std::vector<int>& references, int to,
                                                      const Eigen::Matrix3d& prior) {
-  const core::Pose2& map_T_from = graph_.pose(from);
   const core::Pose2& map_T_to = graph_.pose(to);
   // No overlap asked at the prior's mean (a drive's error may have moved
   // every hit off there): the response at the best correction decides.
@@ -240,6 +287,12 @@ std::optional<PoseGraphEdge> GraphTracker::MatchStop(int from, const std::vector
   const Eigen::Vector3d& o = match.likelihood_offset;
   const core::Pose2 corrected(map_T_to.x() + o.x(), map_T_to.y() + o.y(),
                               map_T_to.heading() + o.z());
+  const int agreeing = AgreeingStop(references, to, corrected);
+  const int from = agreeing >= 0 ? agreeing : nearest;
+  const bool loop =
+      stops_[static_cast<std::size_t>(to)].path_m - stops_[static_cast<std::size_t>(from)].path_m >
+      options_.loop_path_m;
+  const core::Pose2& map_T_from = graph_.pose(from);
   Eigen::Matrix3d covariance = match.likelihood_covariance;
   covariance(0, 0) += options_.edge_floor_m * options_.edge_floor_m;
   covariance(1, 1) += options_.edge_floor_m * options_.edge_floor_m;
@@ -286,15 +339,13 @@ int GraphTracker::MatchAndOptimise(int node) {
     }
   }
   if (nearest >= 0) {
-    const bool loop =
-        stop.path_m - stops_[static_cast<std::size_t>(nearest)].path_m > options_.loop_path_m;
     // The prior: the odometry's error since the last accepted match (the
     // heading's never under the scan tracker's heading prior).
     const double cell = options_.stop.scan.cell_m;
     Eigen::Matrix3d prior = Eigen::Matrix3d::Zero();
     prior(0, 0) = prior(1, 1) = std::max(position_variance_, cell * cell);
     prior(2, 2) = std::max(heading_variance_, std::pow(options_.stop.heading_prior_rad, 2));
-    if (const auto edge = MatchStop(nearest, references, node, loop, prior)) {
+    if (const auto edge = MatchStop(nearest, references, node, prior)) {
       ++scan_matches_;
       graph_.AddEdge(*edge);
       const std::vector<core::Pose2> before = graph_.poses();

@@ -81,10 +81,13 @@ struct GraphTrackerOptions {
 // correlative scan matching (Olson 2009; MatchScan) of the stop's hits
 // against theirs at their current poses, its covariance that of the match's
 // likelihood over its window (as Karto computes it from the response
-// surface). The match's prior is the odometry's error since the stop's last
-// accepted match, as the scan tracker's, so a stop that comes back near
-// stops far along the graph matches them in the same small window, and that
-// edge is a gated, robust loop closure. The graph is optimised (Ceres)
+// surface). The edge goes from the earlier stop whose hits the match aligned
+// most of the new stop's hits with (AgreeingStop), not from the nearest: the
+// match measured the pose relative to those hits. The match's prior is the
+// odometry's error since the stop's last accepted match, as the scan
+// tracker's, so a stop that comes back near stops far along the graph
+// matches them in the same small window, and when it is their hits it
+// aligned with, the edge is a gated, robust loop closure. The graph is optimised (Ceres)
 // whenever a stop has been matched: when its pirouette is whole
 // (stop.scan_match_frames frames), or when the next stop starts.
 // The map's frame is the odometry's at the start; the first stop is fixed.
@@ -163,9 +166,19 @@ class GraphTracker {
   int MatchAndOptimise(int node);
   // A scan match of stop `to` against the hits of the stops `references`
   // (at their poses) with `prior` (dx, dy, dθ in the map's orientation), as
-  // an edge from stop `from` (one of them) when accepted.
-  std::optional<PoseGraphEdge> MatchStop(int from, const std::vector<int>& references, int to,
-                                         bool loop, const Eigen::Matrix3d& prior);
+  // an edge from the reference stop the match agrees with (AgreeingStop,
+  // else `nearest`) when accepted: a loop closure when that stop lies more
+  // than loop_path_m back along the graph.
+  std::optional<PoseGraphEdge> MatchStop(int nearest, const std::vector<int>& references, int to,
+                                         const Eigen::Matrix3d& prior);
+  // Of `references`, the stop the most of stop `to`'s hits, at map_T_to,
+  // lie within the scan match's σ of a hit of (ties: the latest); -1 when
+  // none does. The edge goes from it: the match measured the pose relative
+  // to the hits it aligned, and booked from another stop (the nearest, say,
+  // far back along the graph while the hits aligned were the last stops')
+  // it would tell the graph that the drift between the two is true
+  // (docs/measurements.md, "Pose graph").
+  int AgreeingStop(const std::vector<int>& references, int to, const core::Pose2& map_T_to) const;
 
   GraphTrackerOptions options_;
   PoseTracker stop_;  // the frames' headings within each stop
