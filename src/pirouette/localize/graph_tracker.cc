@@ -224,14 +224,17 @@ int GraphTracker::AgreeingStop(const std::vector<int>& references, int to,
   const auto key = [](const Eigen::Vector2i& c) {
     return (static_cast<std::int64_t>(c.x()) << 32) ^ static_cast<std::uint32_t>(c.y());
   };
-  // Which reference stops have a hit in each cell.
-  std::unordered_map<std::int64_t, std::vector<int>> owners;
+  // Which reference stops have a hit in each cell: (cell, stop) pairs,
+  // sorted (a hash map of vectors cost as much as the match's own store).
+  std::vector<std::pair<std::int64_t, int>> owners;
   for (const int j : references) {
+    const core::Pose2& map_T_j = graph_.pose(j);
     for (const Eigen::Vector2d& q : stops_[static_cast<std::size_t>(j)].hits) {
-      std::vector<int>& v = owners[key(cell_of(graph_.pose(j) * q))];
-      if (v.empty() || v.back() != j) v.push_back(j);
+      owners.emplace_back(key(cell_of(map_T_j * q)), j);
     }
   }
+  std::sort(owners.begin(), owners.end());
+  owners.erase(std::unique(owners.begin(), owners.end()), owners.end());
   const int reach = static_cast<int>(std::ceil(options_.stop.scan.sigma_m / cell));
   std::unordered_map<int, int> agreeing;
   std::vector<int> near;
@@ -240,10 +243,13 @@ int GraphTracker::AgreeingStop(const std::vector<int>& references, int to,
     near.clear();
     for (int dx = -reach; dx <= reach; ++dx) {
       for (int dy = -reach; dy <= reach; ++dy) {
-        const auto it = owners.find(key(c + Eigen::Vector2i(dx, dy)));
-        if (it == owners.end()) continue;
-        for (const int j : it->second) {
-          if (std::find(near.begin(), near.end(), j) == near.end()) near.push_back(j);
+        const std::int64_t k = key(c + Eigen::Vector2i(dx, dy));
+        auto it = std::lower_bound(owners.begin(), owners.end(),
+                                   std::make_pair(k, std::numeric_limits<int>::min()));
+        for (; it != owners.end() && it->first == k; ++it) {
+          if (std::find(near.begin(), near.end(), it->second) == near.end()) {
+            near.push_back(it->second);
+          }
         }
       }
     }

@@ -118,21 +118,31 @@ LikelihoodField FieldAround(const HitStore& reference, const Eigen::Vector2d& or
   const std::vector<Eigen::Vector2d> near =
       reference.Within(lo, lo + Eigen::Vector2d(size * cell, size * cell));
   field.empty = near.empty();
+  // The reference's points are cell centres on the field's own lattice (lo
+  // is a whole number of cells), so a cell's agreement with a point depends
+  // only on how many cells apart they are: one table for every point, not a
+  // log and an exp a cell and point (which took most of a match's time).
+  const std::ptrdiff_t span = 2 * kernel + 1;
+  std::vector<float> table(static_cast<std::size_t>(span * span));
+  for (std::ptrdiff_t dy = -kernel; dy <= kernel; ++dy) {
+    for (std::ptrdiff_t dx = -kernel; dx <= kernel; ++dx) {
+      const double d2 = static_cast<double>(dx * dx + dy * dy) * cell * cell;
+      table[static_cast<std::size_t>((dy + kernel) * span + dx + kernel)] =
+          static_cast<float>(std::log(options.floor + std::exp(-d2 / (2.0 * sigma * sigma))));
+    }
+  }
   for (const Eigen::Vector2d& p : near) {
     const auto cx = static_cast<std::ptrdiff_t>(std::floor((p.x() - lo.x()) / cell));
     const auto cy = static_cast<std::ptrdiff_t>(std::floor((p.y() - lo.y()) / cell));
     for (std::ptrdiff_t dy = -kernel; dy <= kernel; ++dy) {
       const std::ptrdiff_t y = cy + dy;
       if (y < 0 || y >= size) continue;
+      const float* row = &table[static_cast<std::size_t>((dy + kernel) * span + kernel)];
       for (std::ptrdiff_t dx = -kernel; dx <= kernel; ++dx) {
         const std::ptrdiff_t x = cx + dx;
         if (x < 0 || x >= size) continue;
-        const Eigen::Vector2d centre = lo + Eigen::Vector2d((x + 0.5) * cell, (y + 0.5) * cell);
-        const double d2 = (centre - p).squaredNorm();
-        const auto v =
-            static_cast<float>(std::log(options.floor + std::exp(-d2 / (2.0 * sigma * sigma))));
         float& f = field.values[static_cast<std::size_t>(y * size + x)];
-        f = std::max(f, v);
+        f = std::max(f, row[dx]);
       }
     }
   }
@@ -227,17 +237,18 @@ void Moments(const std::vector<Candidate>& candidates, bool with_prior, Eigen::V
   }
   double total = 0.0;
   mean = Eigen::Vector3d::Zero();
-  for (const Candidate& c : candidates) {
-    const double w = std::exp(score(c) - top);
+  std::vector<double> weights(candidates.size());
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const double w = std::exp(score(candidates[i]) - top);
+    weights[i] = w;
     total += w;
-    mean += w * c.offset;
+    mean += w * candidates[i].offset;
   }
   mean /= total;
   covariance = Eigen::Matrix3d::Zero();
-  for (const Candidate& c : candidates) {
-    const double w = std::exp(score(c) - top);
-    const Eigen::Vector3d d = c.offset - mean;
-    covariance += w * d * d.transpose();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const Eigen::Vector3d d = candidates[i].offset - mean;
+    covariance += weights[i] * d * d.transpose();
   }
   covariance /= total;
 }
