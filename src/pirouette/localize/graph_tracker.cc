@@ -214,36 +214,27 @@ core::Pose2 GraphTracker::AddOdometryEdge(int to, const Stop& stop) {
   return step;
 }
 
-int GraphTracker::AgreeingStop(const std::vector<int>& references, int to,
-                               const core::Pose2& map_T_to) const {
-  const double cell = options_.stop.scan.cell_m;
-  const auto cell_of = [cell](const Eigen::Vector2d& p) {
-    return Eigen::Vector2i(static_cast<int>(std::floor(p.x() / cell)),
-                           static_cast<int>(std::floor(p.y() / cell)));
-  };
-  const auto key = [](const Eigen::Vector2i& c) {
-    return (static_cast<std::int64_t>(c.x()) << 32) ^ static_cast<std::uint32_t>(c.y());
-  };
+int GraphTracker::AgreeingStop(const HitStore& reference, const std::vector<PlacedHit>& placed,
+                               int to, const core::Pose2& map_T_to) const {
   // Which reference stops have a hit in each cell: (cell, stop) pairs,
   // sorted (a hash map of vectors cost as much as the match's own store).
   std::vector<std::pair<std::int64_t, int>> owners;
-  for (const int j : references) {
-    const core::Pose2& map_T_j = graph_.pose(j);
-    for (const Eigen::Vector2d& q : stops_[static_cast<std::size_t>(j)].hits) {
-      owners.emplace_back(key(cell_of(map_T_j * q)), j);
-    }
+  owners.reserve(placed.size());
+  for (const PlacedHit& h : placed) {
+    owners.emplace_back(HitStore::KeyOf(reference.CellOf(h.p_map)), h.stop);
   }
   std::sort(owners.begin(), owners.end());
   owners.erase(std::unique(owners.begin(), owners.end()), owners.end());
+  const double cell = reference.cell_m();
   const int reach = static_cast<int>(std::ceil(options_.stop.scan.sigma_m / cell));
   std::unordered_map<int, int> agreeing;
   std::vector<int> near;
   for (const Eigen::Vector2d& q : stops_[static_cast<std::size_t>(to)].hits) {
-    const Eigen::Vector2i c = cell_of(map_T_to * q);
+    const Eigen::Vector2i c = reference.CellOf(map_T_to * q);
     near.clear();
     for (int dx = -reach; dx <= reach; ++dx) {
       for (int dy = -reach; dy <= reach; ++dy) {
-        const std::int64_t k = key(c + Eigen::Vector2i(dx, dy));
+        const std::int64_t k = HitStore::KeyOf(c + Eigen::Vector2i(dx, dy));
         auto it = std::lower_bound(owners.begin(), owners.end(),
                                    std::make_pair(k, std::numeric_limits<int>::min()));
         for (; it != owners.end() && it->first == k; ++it) {
@@ -275,9 +266,12 @@ std::optional<PoseGraphEdge> GraphTracker::MatchStop(int nearest,
   ScanMatchOptions scan = options_.stop.scan;
   scan.min_overlap = 0;
   HitStore reference(scan.cell_m);
+  std::vector<PlacedHit> placed;  // the same hits with their stops, for AgreeingStop
   for (const int j : references) {
+    const core::Pose2& map_T_j = graph_.pose(j);
     for (const Eigen::Vector2d& q : stops_[static_cast<std::size_t>(j)].hits) {
-      reference.Add(graph_.pose(j) * q);
+      placed.push_back({map_T_j * q, j});
+      reference.Add(placed.back().p_map);
     }
   }
   std::vector<Eigen::Vector2d> offsets;
@@ -293,7 +287,7 @@ std::optional<PoseGraphEdge> GraphTracker::MatchStop(int nearest,
   const Eigen::Vector3d& o = match.likelihood_offset;
   const core::Pose2 corrected(map_T_to.x() + o.x(), map_T_to.y() + o.y(),
                               map_T_to.heading() + o.z());
-  const int agreeing = AgreeingStop(references, to, corrected);
+  const int agreeing = AgreeingStop(reference, placed, to, corrected);
   const int from = agreeing >= 0 ? agreeing : nearest;
   const bool loop =
       stops_[static_cast<std::size_t>(to)].path_m - stops_[static_cast<std::size_t>(from)].path_m >

@@ -87,9 +87,9 @@ struct GraphTrackerOptions {
 // odometry's error since the stop's last accepted match, as the scan
 // tracker's, so a stop that comes back near stops far along the graph
 // matches them in the same small window, and when it is their hits it
-// aligned with, the edge is a gated, robust loop closure. The graph is optimised (Ceres)
-// whenever a stop has been matched: when its pirouette is whole
-// (stop.scan_match_frames frames), or when the next stop starts.
+// aligned with, the edge is a gated, robust loop closure. The graph is
+// optimised (Ceres) whenever a stop has been matched: when its pirouette is
+// whole (stop.scan_match_frames frames), or when the next stop starts.
 // The map's frame is the odometry's at the start; the first stop is fixed.
 // Not yet: a wider search for loop closures after long drift (larger
 // windows, or candidates from the place signatures).
@@ -171,14 +171,19 @@ class GraphTracker {
   // than loop_path_m back along the graph.
   std::optional<PoseGraphEdge> MatchStop(int nearest, const std::vector<int>& references, int to,
                                          const Eigen::Matrix3d& prior);
-  // Of `references`, the stop the most of stop `to`'s hits, at map_T_to,
-  // lie within the scan match's σ of a hit of (ties: the latest); -1 when
-  // none does. The edge goes from it: the match measured the pose relative
-  // to the hits it aligned, and booked from another stop (the nearest, say,
-  // far back along the graph while the hits aligned were the last stops')
-  // it would tell the graph that the drift between the two is true
-  // (docs/measurements.md, "Pose graph").
-  int AgreeingStop(const std::vector<int>& references, int to, const core::Pose2& map_T_to) const;
+  // A reference stop's hit where the graph now puts it.
+  struct PlacedHit {
+    Eigen::Vector2d p_map;
+    int stop = 0;
+  };
+  // Of the reference stops (their hits `placed`, as `reference` holds them),
+  // the stop the most of stop `to`'s hits, at map_T_to, lie within the scan
+  // match's σ of a hit of (ties: the latest); -1 when none does. The edge goes from it: the match
+  // measured the pose relative to the hits it aligned, and booked from another stop (the nearest,
+  // say, far back along the graph while the hits aligned were the last stops') it would tell the
+  // graph that the drift between the two is true (docs/measurements.md, "Pose graph").
+  int AgreeingStop(const HitStore& reference, const std::vector<PlacedHit>& placed, int to,
+                   const core::Pose2& map_T_to) const;
 
   GraphTrackerOptions options_;
   PoseTracker stop_;  // the frames' headings within each stop

@@ -30,10 +30,14 @@ HitStore::HitStore(double cell_m) : cell_m_(cell_m) {
   if (!(cell_m > 0.0)) throw std::invalid_argument("HitStore: cell_m must be > 0");
 }
 
-void HitStore::Add(const Eigen::Vector2d& p_map) {
-  cells_.insert(Key(static_cast<std::int64_t>(std::floor(p_map.x() / cell_m_)),
-                    static_cast<std::int64_t>(std::floor(p_map.y() / cell_m_))));
+void HitStore::Add(const Eigen::Vector2d& p_map) { cells_.insert(KeyOf(CellOf(p_map))); }
+
+Eigen::Vector2i HitStore::CellOf(const Eigen::Vector2d& p_map) const {
+  return {static_cast<int>(std::floor(p_map.x() / cell_m_)),
+          static_cast<int>(std::floor(p_map.y() / cell_m_))};
 }
+
+std::int64_t HitStore::KeyOf(const Eigen::Vector2i& cell) { return Key(cell.x(), cell.y()); }
 
 std::vector<Eigen::Vector2d> HitStore::Within(const Eigen::Vector2d& lo,
                                               const Eigen::Vector2d& hi) const {

@@ -40,6 +40,9 @@ class HitStore {
  public:
   explicit HitStore(double cell_m = 0.01);
   void Add(const Eigen::Vector2d& p_map);
+  // The cell a point falls in, and a cell's key: what the store keeps.
+  Eigen::Vector2i CellOf(const Eigen::Vector2d& p_map) const;
+  static std::int64_t KeyOf(const Eigen::Vector2i& cell);
   // The stored points (cell centres) within the axis-aligned box.
   std::vector<Eigen::Vector2d> Within(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) const;
   std::size_t size() const { return cells_.size(); }
