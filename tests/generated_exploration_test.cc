@@ -24,22 +24,31 @@ struct Generated {
   double coverage = 0.98;
 };
 
-class GeneratedExplorationTest : public ::testing::TestWithParam<Generated> {};
-
-TEST_P(GeneratedExplorationTest, IsMappedWithinTheBounds) {
-  const Generated& g = GetParam();
-  const pirouette::testing::TempDir dir("pirouette_generated_exploration_test");
+// Generates the world `g` names and explores it with the defaults; the run's
+// run.json (null, with a test failure, when either command failed).
+nlohmann::json GenerateAndExplore(const Generated& g, const pirouette::testing::TempDir& dir) {
   const std::string world = dir / "world.yaml";
   std::string generate = std::string("world generate --kind ") + g.kind + " --seed " +
                          std::to_string(g.seed) + " --out " + world;
   if (*g.size != '\0') generate += std::string(" --size ") + g.size;
   const auto made = pirouette::testing::RunPirouette(generate);
-  ASSERT_EQ(made.exit_code, 0) << made.output();
+  EXPECT_EQ(made.exit_code, 0) << made.output();
+  if (made.exit_code != 0) return nullptr;
   const auto run = pirouette::testing::RunPirouette("explore --quiet --world " + world + " --out " +
                                                     (dir / "out"));
-  ASSERT_EQ(run.exit_code, 0) << run.output();
+  EXPECT_EQ(run.exit_code, 0) << run.output();
+  if (run.exit_code != 0) return nullptr;
   std::ifstream in(dir / "out/run.json");
-  const nlohmann::json j = nlohmann::json::parse(in);
+  return nlohmann::json::parse(in);
+}
+
+class GeneratedExplorationTest : public ::testing::TestWithParam<Generated> {};
+
+TEST_P(GeneratedExplorationTest, IsMappedWithinTheBounds) {
+  const Generated& g = GetParam();
+  const pirouette::testing::TempDir dir("pirouette_generated_exploration_test");
+  const nlohmann::json j = GenerateAndExplore(g, dir);
+  ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j.at("status"), "complete");
   const nlohmann::json& e = j.at("eval");
   EXPECT_GE(e.at("coverage").get<double>(), g.coverage);
@@ -58,5 +67,25 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Generated{"rooms", 1, ""}, Generated{"maze", 7, "", 0.93},
                       Generated{"clutter", 1, ""}, Generated{"apartment", 2, "6,5"}),
     [](const ::testing::TestParamInfo<Generated>& info) { return std::string(info.param.kind); });
+
+// Maze 108's corridors are 0.12-0.20 m wide, narrower than twice the camera's
+// near range: at its start the views across one are filled by walls, whose
+// blind areas, grown by the radius, close every way out of the robot's
+// coarse cell. Once the first pirouette ended the run there ("complete" at
+// coverage 0.002); the robot now probes across the blind ring along the
+// corridor it saw (Explorer::ProbeAcrossTheBlindRing) and goes on mapping. It
+// still falls far short of the bounds (docs/worlds.md, "Still open", 1), so
+// this checks only that it gets out, and maps no false free floor doing it.
+TEST(BoxedInMazeTest, ProbesAcrossTheBlindRingOutOfItsStart) {
+  const pirouette::testing::TempDir dir("pirouette_boxed_in_maze_test");
+  const nlohmann::json j = GenerateAndExplore(Generated{"maze", 108, ""}, dir);
+  ASSERT_FALSE(j.is_null());
+  EXPECT_EQ(j.at("status"), "complete");
+  EXPECT_GE(j.at("probes").get<int>(), 1);
+  EXPECT_GE(j.at("pirouettes").get<int>(), 5);
+  const nlohmann::json& e = j.at("eval");
+  EXPECT_GE(e.at("coverage").get<double>(), 0.05);
+  EXPECT_LE(e.at("false_free").get<double>(), 0.005);
+}
 
 }  // namespace

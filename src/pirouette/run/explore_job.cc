@@ -154,6 +154,7 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   if (result.pose_error) run["pose_error"] = PoseErrorJson(*result.pose_error);
   run["blocked_looks"] = result.blocked_looks;
   run["backups"] = result.backups;
+  run["probes"] = result.probes;
   if (!eval.is_null()) run["eval"] = eval;
   return run;
 }

@@ -77,6 +77,13 @@ Explorer::Explorer(robot::Robot& robot, const RobotDescription& description,
                  ? explore::MakeFrontierPlanner(planner_options_)
                  : explore::MakeDistanceTransformPlanner(planner_options_);
   coarse_m_ = planner_options_.CoarseFactor(cell_m_) * cell_m_;
+  if (planner_options_.CoarseFactor(cell_m_) > 1) {
+    explore::PlannerOptions fine = planner_options_;
+    fine.coarse_factor = 1;
+    fine_planner_ = options.planner == PlannerKind::kFrontier
+                        ? explore::MakeFrontierPlanner(fine)
+                        : explore::MakeDistanceTransformPlanner(fine);
+  }
 }
 
 ExplorationResult Explorer::Run() {
@@ -153,6 +160,19 @@ void Explorer::Loop() {
       plan = planner_->Next(VerificationMap(), Pose());
       verifying = plan.has_value();
     }
+    explore::Planner* planner = planner_.get();  // the planner that made the plan
+    bool fine = false;                           // the plan passes where the coarse grid is closed
+    if (!plan && fine_planner_) {
+      // The coarse grid closes a passage whose clearance is under about two
+      // coarse cells (explore::DefaultCoarseFactor): a doorway or a maze's
+      // corridor just wider than the robot. Where it has no plan left, the
+      // map's own cells may still have one; a look that blocks such a plan
+      // gives its goal up at once, not counted toward stuck.
+      run::StageTimer timer(result_.times.plan_s);
+      plan = fine_planner_->Next(PlanningMap(), Pose());
+      if (plan) planner = fine_planner_.get();
+      fine = plan.has_value();
+    }
     bool corroborating = false;  // the plan goes to see from a second place what one saw free
     if (!plan && !corroboration_budget_) {
       corroboration_budget_ = (result_.pirouettes + kCorroborationTripsPerPirouettes - 1) /
@@ -166,7 +186,7 @@ void Explorer::Loop() {
     }
     if (!plan) {
       plan_.clear();
-      if (!StepAwayToSeeNearby()) result_.status = "complete";
+      if (!ProbeAcrossTheBlindRing() && !StepAwayToSeeNearby()) result_.status = "complete";
       continue;
     }
     StopWhereTheGoalIsInView(*plan);
@@ -175,25 +195,25 @@ void Explorer::Loop() {
     if (plan->waypoints_world.empty() && AtLastPirouette()) {
       // Already looked all round from here and the goal stays unknown:
       // it cannot be seen from here; the planner is not to offer it again.
-      planner_->ReportUnreachable(*plan);
+      planner->ReportUnreachable(*plan);
       continue;
     }
     const FollowOutcome outcome = Follow(*plan);
     if ((outcome == FollowOutcome::kReached && AtLastPirouette()) ||
-        (outcome == FollowOutcome::kBlocked && corroborating)) {
+        (outcome == FollowOutcome::kBlocked && (corroborating || fine))) {
       // Reached: the plan's waypoints were all where the robot stands
       // (within a quarter cell), and looking all round again would show
       // nothing new. Blocked on a second look: nothing was left to explore,
       // and a second look is not worth a stuck run.
-      planner_->ReportUnreachable(*plan);
+      planner->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kReached) {
       failures = 0;
       Pirouette();
       // It has looked again: what the evidence opened is planned as usual,
       // and the goal is not checked again.
-      if (verifying || corroborating) planner_->ReportUnreachable(*plan);
+      if (verifying || corroborating) planner->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kBlocked) {
-      if (++failures % kFailuresPerGiveUp == 0) planner_->ReportUnreachable(*plan);
+      if (++failures % kFailuresPerGiveUp == 0) planner->ReportUnreachable(*plan);
       if (failures >= kMaxFailures) {
         result_.status = "stuck";
         result_.reason = fmt::format(

@@ -202,6 +202,22 @@ class Explorer {
   // nothing to see or nowhere to go.
   bool StepAwayToSeeNearby();
 
+  // Out of the ring the camera cannot see, when no plan starts here: in a
+  // corridor narrower than twice the camera's near range (a maze's) the
+  // views across it are filled by its walls, whose blind areas, grown by
+  // the radius, close every way out of the robot's coarse cell, though the
+  // pirouette saw the corridor's floor beyond the ring. Picks the heading
+  // whose nearest point past the ring the planner can go on from (a coarse
+  // cell from which unknown space is reachable), with no hit (only blind or
+  // unknown cells) within the swept corridor on the way, and follows that one
+  // leg: the look before the move checks, as for any leg, that the frame
+  // facing it shows the floor past the ring across the whole swept corridor
+  // (anything tall enough to matter standing in the ring would fill the
+  // bottom of the picture instead: LookVerdict::kBlind), and a contact stops
+  // the rest. Each heading is tried once from a place; at most kMaxProbes a
+  // run. False when there is no such heading.
+  bool ProbeAcrossTheBlindRing();
+
   // Back to the start over known-free floor: the distance transform from the
   // start's coarse cell alone, the unknown counted as blocked.
   // True when the robot reached its start.
@@ -221,10 +237,15 @@ class Explorer {
   std::vector<Eigen::Vector2d> plan_;  // the plan being followed, for the live views
   explore::PlannerOptions planner_options_;
   std::unique_ptr<explore::Planner> planner_;
+  // The same planner on a coarse grid of one map cell, for the plans the
+  // coarse grid has none of (see Loop); none where the coarse factor is 1.
+  std::unique_ptr<explore::Planner> fine_planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
   core::Pose2 start_pose_;
   std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing
   int step_aways_ = 0;
+  int probes_ = 0;
+  std::set<std::pair<WorldCell, int>> probes_tried_;  // (place, heading) probed
   int corroboration_trips_ = 0;
   std::optional<int> corroboration_budget_;    // set when the trips begin
   bool looked_since_drive_ = false;            // a frame was taken where the robot stands

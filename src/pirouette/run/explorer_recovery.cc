@@ -3,8 +3,10 @@
 // camera cannot see near a stop, and the way home (explorer_loop.h).
 #include "pirouette/run/explorer_loop.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -12,6 +14,7 @@
 #include "pirouette/explore/coarse_grid.h"
 #include "pirouette/explore/distance_transform.h"
 #include "pirouette/explore/path.h"
+#include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/mapping/trinary_map.h"
 
 namespace pirouette::run::internal {
@@ -31,6 +34,12 @@ constexpr int kStepAwayDirections = 12;
 constexpr double kStepAwayHalfTurnSteps = 6.0;
 // Step-aways a run makes at most (each a short trip and a pirouette).
 constexpr int kMaxStepAways = 8;
+// Probing across the blind ring: headings tried (360° / kProbeHeadings
+// apart), how far past the near range a probe may end (coarse cells), and
+// probes a run makes at most.
+constexpr int kProbeHeadings = 36;
+constexpr double kProbePastNearCoarse = 2.0;
+constexpr int kMaxProbes = 16;
 // Tries to plan home again after a way home was blocked.
 constexpr int kReturnHomeAttempts = 5;
 
@@ -100,6 +109,80 @@ bool Explorer::StepAwayToSeeNearby() {
     const core::CellIndex c = mapper_.grid().geometry().CellOf(CentreOf(key));
     if (mapper_.grid().State(c) == mapping::CellState::kUnknown) given_up_.insert(key);
   }
+  return true;
+}
+
+bool Explorer::ProbeAcrossTheBlindRing() {
+  if (!AtLastPirouette() || probes_ >= kMaxProbes) return false;
+  const mapping::TrinaryMap map = PlanningMap();
+  const explore::CoarseGrid grid = explore::PlanningGrid(map, planner_options_);
+  const explore::DistanceField field = explore::ChamferDistanceTransform(grid);
+  const core::GridGeometry& coarse = grid.geometry();
+  const Eigen::Vector2d here = Pose().translation();
+  const auto reachable = [&](const Eigen::Vector2d& p) -> std::optional<std::int32_t> {
+    const std::optional<core::CellIndex> c = coarse.CellAt(p);
+    if (!c || grid.At(*c) == explore::CoarseCell::kBlocked) return std::nullopt;
+    const std::int32_t d = field.At(*c);
+    if (d >= explore::kUnreachable) return std::nullopt;
+    return d;
+  };
+  if (reachable(here)) return false;  // the planner's business, not a probe's
+  const mapping::OccupancyGrid& occupancy = mapper_.grid();
+  const core::GridGeometry& g = occupancy.geometry();
+  const double half = radius_m_ - cell_m_;  // the look's swept corridor
+  // Whether a cell within `half` of the segment here -> to was hit (a blind
+  // area or nothing seen is what a probe crosses; a hit is not).
+  const auto hit_on_the_way = [&](const Eigen::Vector2d& to) {
+    const Eigen::Vector2d lo = here.cwiseMin(to) - Eigen::Vector2d::Constant(half);
+    const Eigen::Vector2d hi = here.cwiseMax(to) + Eigen::Vector2d::Constant(half);
+    const core::CellIndex a = g.CellOf(lo);
+    const core::CellIndex b = g.CellOf(hi);
+    const Eigen::Vector2d d = to - here;
+    for (int y = std::max(0, a.y); y <= std::min(g.height() - 1, b.y); ++y) {
+      for (int x = std::max(0, a.x); x <= std::min(g.width() - 1, b.x); ++x) {
+        const core::CellIndex c{x, y};
+        const Eigen::Vector2d p = g.CellCentre(c);
+        const double t = std::clamp((p - here).dot(d) / d.squaredNorm(), 0.0, 1.0);
+        if ((here + t * d - p).norm() > half) continue;
+        if (occupancy.State(c) == mapping::CellState::kOccupied && !occupancy.BlindOnly(c)) {
+          return true;
+        }
+      }
+    }
+    return false;
+  };
+  const WorldCell place = KeyOf(here);
+  const double near = look_.options().near_m;
+  struct Candidate {
+    std::int32_t distance;  // from its end to unknown space, the field's units
+    double length;
+    int heading;
+    Eigen::Vector2d to;
+  };
+  std::optional<Candidate> best;
+  for (int k = 0; k < kProbeHeadings; ++k) {
+    if (probes_tried_.contains({place, k})) continue;
+    const double heading = 2.0 * std::numbers::pi * k / kProbeHeadings;
+    const Eigen::Vector2d direction(std::cos(heading), std::sin(heading));
+    for (double length = cell_m_; length <= near + kProbePastNearCoarse * coarse_m_;
+         length += cell_m_) {
+      const Eigen::Vector2d to = here + length * direction;
+      const std::optional<std::int32_t> distance = reachable(to);
+      if (!distance) continue;
+      if (!hit_on_the_way(to) &&
+          (!best || std::pair(*distance, length) < std::pair(best->distance, best->length))) {
+        best = Candidate{*distance, length, k, to};
+      }
+      break;
+    }
+  }
+  if (!best) return false;
+  ++probes_;
+  ++result_.probes;
+  probes_tried_.insert({place, best->heading});
+  explore::Plan plan;
+  plan.waypoints_world = {best->to};
+  if (Follow(plan) == FollowOutcome::kReached) Pirouette();
   return true;
 }
 
