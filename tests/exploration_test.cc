@@ -52,9 +52,10 @@ TEST(ExplorationTest, MazeIsMappedCompletely) {
 }
 
 // Two rooms joined by a passage 0.13 m wide and 0.30 m long: 1.6 diameters of
-// the Yujin robot, a clearance of 5 cm, under the two coarse cells (2 cm
-// each) that keep a passage open on the coarse planning grid whatever its
-// alignment (explore::DefaultCoarseFactor). The coarse plans end at the
+// the Yujin robot, a clearance of 5 cm, which a cell of wall error on each
+// side brings under the two coarse cells (2 cm each) that keep a passage
+// open on the coarse planning grid whatever its alignment
+// (explore::DefaultCoarseFactor). The coarse plans end at the
 // passage's mouth, the east room unseen (coverage 0.50 before); a plan on the
 // map's own cells, the explorer's fallback when the coarse grid has none,
 // takes the robot through, each leg looked at first as always.
