@@ -1,12 +1,14 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <utility>
+
+#include "pirouette/core/geometry2.h"
 
 namespace pirouette::core {
 
@@ -90,5 +92,24 @@ class GridGeometry {
   int width_;
   int height_;
 };
+
+// Whether `pred` holds for any cell, on the grid or off it, whose centre lies
+// within reach_m of the segment from -> to (the corridor a disc of reach_m
+// sweeps along it). Stops at the first such cell.
+template <typename Pred>
+bool AnyCellNearSegment(const GridGeometry& g, const Eigen::Vector2d& from,
+                        const Eigen::Vector2d& to, double reach_m, Pred&& pred) {
+  const Eigen::Vector2d margin(reach_m, reach_m);
+  const CellIndex a = g.CellOf(from.cwiseMin(to) - margin);
+  const CellIndex b = g.CellOf(from.cwiseMax(to) + margin);
+  for (int y = a.y; y <= b.y; ++y) {
+    for (int x = a.x; x <= b.x; ++x) {
+      const CellIndex c{x, y};
+      if (DistanceToSegment(g.CellCentre(c), from, to) > reach_m) continue;
+      if (pred(c)) return true;
+    }
+  }
+  return false;
+}
 
 }  // namespace pirouette::core

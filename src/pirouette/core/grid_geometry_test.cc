@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace pirouette::core {
 namespace {
 
@@ -36,6 +38,33 @@ TEST(GridGeometry, FlatIsRowMajor) {
   EXPECT_EQ(g.Flat({3, 2}), 17u);
   EXPECT_EQ(g.Unflat(17), (CellIndex{3, 2}));
   EXPECT_EQ(g.CellCount(), 35u);
+}
+
+TEST(GridGeometry, AnyCellNearSegmentVisitsTheSweptCorridorOnAndOffTheGrid) {
+  const GridGeometry g(1.0, {0, 0}, 5, 5);
+  // Every cell a corridor of reach 1 along y = 2.5 from x = 0.5 to 2.5 holds,
+  // against a brute-force check of every cell round it.
+  std::vector<CellIndex> visited;
+  EXPECT_FALSE(AnyCellNearSegment(g, {0.5, 2.5}, {2.5, 2.5}, 1.0, [&](const CellIndex& c) {
+    visited.push_back(c);
+    return false;
+  }));
+  std::vector<CellIndex> expected;
+  for (int y = -3; y <= 8; ++y) {
+    for (int x = -3; x <= 8; ++x) {
+      if (DistanceToSegment(g.CellCentre({x, y}), {0.5, 2.5}, {2.5, 2.5}) <= 1.0) {
+        expected.push_back({x, y});
+      }
+    }
+  }
+  EXPECT_EQ(visited, expected);
+  // (-1, 2) lies off the grid, a cell from the segment's start: visited.
+  EXPECT_TRUE(AnyCellNearSegment(g, {0.5, 2.5}, {2.5, 2.5}, 1.0, [](const CellIndex& c) {
+    return c == CellIndex{-1, 2};
+  }));
+  EXPECT_FALSE(AnyCellNearSegment(g, {0.5, 2.5}, {2.5, 2.5}, 1.0, [](const CellIndex& c) {
+    return c == CellIndex{4, 4};
+  }));
 }
 
 }  // namespace

@@ -63,19 +63,9 @@ bool DiscKnownFree(const TrinaryMap& map, const Eigen::Vector2d& p_m, double rad
 bool CorridorKnownFree(const TrinaryMap& map, const Eigen::Vector2d& from,
                        const Eigen::Vector2d& to, double radius_m) {
   const core::GridGeometry& g = map.geometry;
-  const double reach = radius_m + 0.5 * g.resolution();
-  const Eigen::Vector2d lo = from.cwiseMin(to) - Eigen::Vector2d(reach, reach);
-  const Eigen::Vector2d hi = from.cwiseMax(to) + Eigen::Vector2d(reach, reach);
-  const core::CellIndex a = g.CellOf(lo);
-  const core::CellIndex b = g.CellOf(hi);
-  for (int y = a.y; y <= b.y; ++y) {
-    for (int x = a.x; x <= b.x; ++x) {
-      const core::CellIndex c{x, y};
-      if (core::DistanceToSegment(g.CellCentre(c), from, to) > reach) continue;
-      if (!g.Contains(c) || map.At(c) != CellState::kFree) return false;
-    }
-  }
-  return true;
+  return !core::AnyCellNearSegment(
+      g, from, to, radius_m + 0.5 * g.resolution(),
+      [&](const core::CellIndex& c) { return !g.Contains(c) || map.At(c) != CellState::kFree; });
 }
 
 TrinaryMap FillPinholes(const TrinaryMap& map, int max_cells) {

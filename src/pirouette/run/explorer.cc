@@ -145,19 +145,25 @@ void Explorer::Loop() {
       result_.reason = fmt::format("{} plans in a row did not move the robot", idle);
       break;
     }
+    // Every plan below starts from the one planning map: nothing changes
+    // the map until a plan is followed.
     std::optional<explore::Plan> plan;
+    const mapping::TrinaryMap planning = [this] {
+      run::StageTimer timer(result_.times.plan_s);
+      return PlanningMap();
+    }();
     {
       run::StageTimer timer(result_.times.plan_s);
-      plan = planner_->Next(PlanningMap(), Pose());
+      plan = planner_->Next(planning, Pose());
     }
     if (!plan) {
       run::StageTimer timer(result_.times.plan_s);
-      plan = PlanOutOfTheBlindArea();
+      plan = PlanOutOfTheBlindArea(planning);
     }
     bool verifying = false;  // the plan goes to look again at what one look closed
     if (!plan) {
       run::StageTimer timer(result_.times.plan_s);
-      plan = planner_->Next(VerificationMap(), Pose());
+      plan = planner_->Next(VerificationMap(planning), Pose());
       verifying = plan.has_value();
     }
     explore::Planner* planner = planner_.get();  // the planner that made the plan
@@ -169,7 +175,7 @@ void Explorer::Loop() {
       // map's own cells may still have one; a look that blocks such a plan
       // gives its goal up at once, not counted toward stuck.
       run::StageTimer timer(result_.times.plan_s);
-      plan = fine_planner_->Next(PlanningMap(), Pose());
+      plan = fine_planner_->Next(planning, Pose());
       if (plan) planner = fine_planner_.get();
       fine = plan.has_value();
     }
@@ -180,13 +186,13 @@ void Explorer::Loop() {
     }
     if (!plan && corroboration_trips_ < corroboration_budget_.value_or(0)) {
       run::StageTimer timer(result_.times.plan_s);
-      plan = planner_->Next(CorroborationMap(), Pose());
+      plan = planner_->Next(CorroborationMap(planning), Pose());
       corroborating = plan.has_value();
       if (corroborating) ++corroboration_trips_;
     }
     if (!plan) {
       plan_.clear();
-      if (!ProbeAcrossTheBlindRing() && !StepAwayToSeeNearby()) result_.status = "complete";
+      if (!ProbeAcrossTheBlindRing(planning) && !StepAwayToSeeNearby()) result_.status = "complete";
       continue;
     }
     StopWhereTheGoalIsInView(*plan);
@@ -394,8 +400,8 @@ mapping::TrinaryMap Explorer::PlanningMap() const {
   return map;
 }
 
-mapping::TrinaryMap Explorer::VerificationMap() const {
-  mapping::TrinaryMap map = PlanningMap();
+mapping::TrinaryMap Explorer::VerificationMap(const mapping::TrinaryMap& planning) const {
+  mapping::TrinaryMap map = planning;
   const mapping::OccupancyGrid& occupancy = mapper_.grid();
   const core::GridGeometry& g = map.geometry;
   const Eigen::Vector2d here = Pose().translation();
@@ -412,8 +418,8 @@ mapping::TrinaryMap Explorer::VerificationMap() const {
   return map;
 }
 
-mapping::TrinaryMap Explorer::CorroborationMap() const {
-  mapping::TrinaryMap map = PlanningMap();
+mapping::TrinaryMap Explorer::CorroborationMap(const mapping::TrinaryMap& planning) const {
+  mapping::TrinaryMap map = planning;
   const mapping::OccupancyGrid& occupancy = mapper_.grid();
   const core::GridGeometry& g = map.geometry;
   const Eigen::Vector2d here = Pose().translation();
@@ -424,9 +430,9 @@ mapping::TrinaryMap Explorer::CorroborationMap() const {
   return map;
 }
 
-std::optional<explore::Plan> Explorer::PlanOutOfTheBlindArea() {
+std::optional<explore::Plan> Explorer::PlanOutOfTheBlindArea(const mapping::TrinaryMap& planning) {
   if (!AtLastPirouette()) return std::nullopt;
-  mapping::TrinaryMap map = PlanningMap();
+  mapping::TrinaryMap map = planning;
   const core::Pose2 pose = Pose();
   const explore::CoarseGrid grid = explore::PlanningGrid(map, planner_options_);
   const std::optional<core::CellIndex> here = grid.geometry().CellAt(pose.translation());

@@ -102,7 +102,7 @@ class Explorer {
   // its goal is given up once the robot has looked all round there, so each
   // goal is checked once. The cells within NearBlindRadius of the robot keep
   // their evidence: the camera cannot look at them from here.
-  mapping::TrinaryMap VerificationMap() const;
+  mapping::TrinaryMap VerificationMap(const mapping::TrinaryMap& planning) const;
 
   // The planning map in which the floor seen free from one place only, from
   // far enough away that a look from here would make it free from two
@@ -112,7 +112,7 @@ class Explorer {
   // free, covers the floor. Each such goal is tried once: given up once the
   // robot has looked all round there, or at once when a look blocks the way;
   // at most a quarter as many trips as pirouettes before the first.
-  mapping::TrinaryMap CorroborationMap() const;
+  mapping::TrinaryMap CorroborationMap(const mapping::TrinaryMap& planning) const;
 
   // A plan out of the camera's blind area at the robot's feet, when the
   // planner found none because the robot's own coarse cell is blocked: where
@@ -126,7 +126,7 @@ class Explorer {
   // the blind area still keeps plans out, and the look before every move
   // checks the floor before the robot drives. Nothing unless boxed in like
   // that, just after a pirouette.
-  std::optional<explore::Plan> PlanOutOfTheBlindArea();
+  std::optional<explore::Plan> PlanOutOfTheBlindArea(const mapping::TrinaryMap& planning);
 
   // The distance from which the robot looks at a goal cell: past the
   // camera's near range by a coarse cell, so that all of the cell is in view.
@@ -216,7 +216,7 @@ class Explorer {
   // bottom of the picture instead: LookVerdict::kBlind), and a contact stops
   // the rest. Each heading is tried once from a place; at most kMaxProbes a
   // run. False when there is no such heading.
-  bool ProbeAcrossTheBlindRing();
+  bool ProbeAcrossTheBlindRing(const mapping::TrinaryMap& planning);
 
   // Back to the start over known-free floor: the distance transform from the
   // start's coarse cell alone, the unknown counted as blocked.

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "pirouette/core/grid_geometry.h"
 #include "pirouette/explore/coarse_grid.h"
 #include "pirouette/explore/distance_transform.h"
 #include "pirouette/explore/path.h"
@@ -112,10 +113,9 @@ bool Explorer::StepAwayToSeeNearby() {
   return true;
 }
 
-bool Explorer::ProbeAcrossTheBlindRing() {
+bool Explorer::ProbeAcrossTheBlindRing(const mapping::TrinaryMap& planning) {
   if (!AtLastPirouette() || probes_ >= kMaxProbes) return false;
-  const mapping::TrinaryMap map = PlanningMap();
-  const explore::CoarseGrid grid = explore::PlanningGrid(map, planner_options_);
+  const explore::CoarseGrid grid = explore::PlanningGrid(planning, planner_options_);
   const explore::DistanceField field = explore::ChamferDistanceTransform(grid);
   const core::GridGeometry& coarse = grid.geometry();
   const Eigen::Vector2d here = Pose().translation();
@@ -133,23 +133,10 @@ bool Explorer::ProbeAcrossTheBlindRing() {
   // Whether a cell within `half` of the segment here -> to was hit (a blind
   // area or nothing seen is what a probe crosses; a hit is not).
   const auto hit_on_the_way = [&](const Eigen::Vector2d& to) {
-    const Eigen::Vector2d lo = here.cwiseMin(to) - Eigen::Vector2d::Constant(half);
-    const Eigen::Vector2d hi = here.cwiseMax(to) + Eigen::Vector2d::Constant(half);
-    const core::CellIndex a = g.CellOf(lo);
-    const core::CellIndex b = g.CellOf(hi);
-    const Eigen::Vector2d d = to - here;
-    for (int y = std::max(0, a.y); y <= std::min(g.height() - 1, b.y); ++y) {
-      for (int x = std::max(0, a.x); x <= std::min(g.width() - 1, b.x); ++x) {
-        const core::CellIndex c{x, y};
-        const Eigen::Vector2d p = g.CellCentre(c);
-        const double t = std::clamp((p - here).dot(d) / d.squaredNorm(), 0.0, 1.0);
-        if ((here + t * d - p).norm() > half) continue;
-        if (occupancy.State(c) == mapping::CellState::kOccupied && !occupancy.BlindOnly(c)) {
-          return true;
-        }
-      }
-    }
-    return false;
+    return core::AnyCellNearSegment(g, here, to, half, [&](const core::CellIndex& c) {
+      return g.Contains(c) && occupancy.State(c) == mapping::CellState::kOccupied &&
+             !occupancy.BlindOnly(c);
+    });
   };
   const WorldCell place = KeyOf(here);
   const double near = look_.options().near_m;
