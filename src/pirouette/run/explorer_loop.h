@@ -244,7 +244,6 @@ class Explorer {
   core::Pose2 start_pose_;
   std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing
   int step_aways_ = 0;
-  int probes_ = 0;
   std::set<std::pair<WorldCell, int>> probes_tried_;  // (place, heading) probed
   int corroboration_trips_ = 0;
   std::optional<int> corroboration_budget_;    // set when the trips begin

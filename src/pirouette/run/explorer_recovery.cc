@@ -114,7 +114,7 @@ bool Explorer::StepAwayToSeeNearby() {
 }
 
 bool Explorer::ProbeAcrossTheBlindRing(const mapping::TrinaryMap& planning) {
-  if (!AtLastPirouette() || probes_ >= kMaxProbes) return false;
+  if (!AtLastPirouette() || result_.probes >= kMaxProbes) return false;
   const explore::CoarseGrid grid = explore::PlanningGrid(planning, planner_options_);
   const explore::DistanceField field = explore::ChamferDistanceTransform(grid);
   const core::GridGeometry& coarse = grid.geometry();
@@ -164,7 +164,6 @@ bool Explorer::ProbeAcrossTheBlindRing(const mapping::TrinaryMap& planning) {
     }
   }
   if (!best) return false;
-  ++probes_;
   ++result_.probes;
   probes_tried_.insert({place, best->heading});
   explore::Plan plan;
