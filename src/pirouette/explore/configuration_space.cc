@@ -1,7 +1,9 @@
 #include "pirouette/explore/configuration_space.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -15,15 +17,17 @@ struct Offset {
   int dy;
 };
 
-// The cell offsets whose centres lie within `radius_cells` of the origin's.
+// The cell offsets whose centres lie nearer than `radius_cells` to some
+// point of the origin's cell, a unit square: the distance from a centre
+// (dx, dy) to the square is |(max(|dx| - 1/2, 0), max(|dy| - 1/2, 0))|.
 std::vector<Offset> DiscOffsets(double radius_cells) {
-  // A hair of slack so that a radius of exactly n cells includes the cells n away.
-  const double r2 = radius_cells * radius_cells * (1.0 + 1e-12);
-  const int reach = static_cast<int>(std::floor(radius_cells));
+  const auto gap = [](int d) { return std::max(std::abs(d) - 0.5, 0.0); };
+  const double r2 = radius_cells * radius_cells;
+  const int reach = static_cast<int>(std::ceil(radius_cells + 0.5));
   std::vector<Offset> offsets;
   for (int dy = -reach; dy <= reach; ++dy) {
     for (int dx = -reach; dx <= reach; ++dx) {
-      if (static_cast<double>(dx * dx + dy * dy) <= r2) offsets.push_back({dx, dy});
+      if (gap(dx) * gap(dx) + gap(dy) * gap(dy) < r2) offsets.push_back({dx, dy});
     }
   }
   return offsets;

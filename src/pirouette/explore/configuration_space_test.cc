@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <stdexcept>
 
@@ -20,17 +24,39 @@ int Count(const mapping::TrinaryMap& map, CellState state) {
   return static_cast<int>(std::count(map.cells.begin(), map.cells.end(), state));
 }
 
-TEST(ConfigurationSpaceTest, OneObstacleGrowsIntoADiscOfTheRadius) {
+TEST(ConfigurationSpaceTest, OneObstacleGrowsByTheRadiusAroundItsSquare) {
   mapping::TrinaryMap map = Uniform(21, 21, 0.01, CellState::kFree);
   map.cells[map.geometry.Flat({10, 10})] = CellState::kOccupied;
   const mapping::TrinaryMap cspace = MakeConfigurationSpace(map, 0.05);
-  // The cells whose centres lie within 5 cells of the obstacle's: 81 of them.
-  EXPECT_EQ(Count(cspace, CellState::kOccupied), 81);
-  EXPECT_EQ(cspace.At({15, 10}), CellState::kOccupied);  // exactly the radius away
-  EXPECT_EQ(cspace.At({16, 10}), CellState::kFree);
-  EXPECT_EQ(cspace.At({14, 13}), CellState::kOccupied);  // 3-4-5
-  EXPECT_EQ(cspace.At({14, 14}), CellState::kFree);      // 5.66 cells away
+  // Along an axis, the centres within the radius of the obstacle's centre.
+  EXPECT_EQ(cspace.At({15, 10}), CellState::kOccupied);  // 4.5 cells from its face
+  EXPECT_EQ(cspace.At({16, 10}), CellState::kFree);      // 5.5 cells
+  EXPECT_EQ(cspace.At({14, 13}), CellState::kOccupied);
+  // Off the axes, nearer than the radius to the square's corner though
+  // farther from its centre: (3.5, 3.5) from the corner is 4.95 cells.
+  EXPECT_EQ(cspace.At({14, 14}), CellState::kOccupied);  // 5.66 cells from the centre
+  EXPECT_EQ(cspace.At({15, 14}), CellState::kFree);      // 5.70 cells from the corner
   EXPECT_EQ(cspace.geometry, map.geometry);
+}
+
+TEST(ConfigurationSpaceTest, KeepsALegRoundAWallsEndOffItsCorner) {
+  // Generated maze 101: a wall ending at a cell's edge; a leg turning
+  // round it at 45° passed 3.5 mm inside the radius of its corner when
+  // grown from the cell's centre. Every cell centre left free is at least
+  // the radius from every point of the wall's cells.
+  mapping::TrinaryMap map = Uniform(30, 30, 0.01, CellState::kFree);
+  for (int x = 0; x <= 10; ++x) map.cells[map.geometry.Flat({x, 20})] = CellState::kOccupied;
+  const double radius = 0.04;
+  const mapping::TrinaryMap cspace = MakeConfigurationSpace(map, radius);
+  for (int y = 0; y < 30; ++y) {
+    for (int x = 0; x < 30; ++x) {
+      if (cspace.At({x, y}) != CellState::kFree) continue;
+      const Eigen::Vector2d p = map.geometry.CellCentre({x, y});
+      // The nearest point of the wall's cells, [0, 0.11] × [0.20, 0.21].
+      const Eigen::Vector2d q(std::clamp(p.x(), 0.0, 0.11), std::clamp(p.y(), 0.20, 0.21));
+      EXPECT_GE((p - q).norm(), radius - 1e-9) << x << ", " << y;
+    }
+  }
 }
 
 TEST(ConfigurationSpaceTest, UnknownIsNotGrownAndStaysUnknown) {
@@ -43,7 +69,7 @@ TEST(ConfigurationSpaceTest, UnknownIsNotGrownAndStaysUnknown) {
   EXPECT_EQ(cspace.At({12, 12}), CellState::kFree);
   EXPECT_EQ(cspace.At({5, 2}), CellState::kOccupied);  // unknown within the radius is blocked
   EXPECT_EQ(cspace.At({8, 8}), CellState::kUnknown);
-  EXPECT_EQ(Count(cspace, CellState::kOccupied), 13);
+  EXPECT_EQ(Count(cspace, CellState::kOccupied), 21);  // the 5 × 5 square but its corners
 }
 
 TEST(ConfigurationSpaceTest, ZeroRadiusChangesNothing) {
@@ -74,8 +100,10 @@ TEST(ConfigurationSpaceTest, EqualsBruteForceOnRandomMaps) {
         bool near = false;
         for (int oy = 0; oy < h && !near; ++oy) {
           for (int ox = 0; ox < w && !near; ++ox) {
-            near = map.At({ox, oy}) == CellState::kOccupied &&
-                   (ox - x) * (ox - x) + (oy - y) * (oy - y) <= r_cells * r_cells + 1e-9;
+            const double gx = std::max(std::abs(ox - x) - 0.5, 0.0);
+            const double gy = std::max(std::abs(oy - y) - 0.5, 0.0);
+            near =
+                map.At({ox, oy}) == CellState::kOccupied && gx * gx + gy * gy < r_cells * r_cells;
           }
         }
         const CellState expected = near ? CellState::kOccupied : map.At({x, y});

@@ -163,6 +163,16 @@ void OccupancyGrid::SetFree(const core::CellIndex& c) {
   cell.free_from = kTwoPlaces;
 }
 
+void OccupancyGrid::SetSolid(const core::CellIndex& c) {
+  if (!geometry_.Contains(c)) return;
+  const std::size_t flat = geometry_.Flat(c);
+  Cell& cell = cells_[flat];
+  cell.log_odds = clamp_max_;
+  cell.stamp = frame_;
+  cell.seen_from = kTwoPlaces;
+  FlagBlockOf(flat);
+}
+
 void OccupancyGrid::LimitSide(int max_side_cells) {
   if (max_side_cells < 1 || max_side_cells > kMaxSideCells) {
     throw std::invalid_argument("OccupancyGrid::LimitSide: needs 1..kMaxSideCells cells");

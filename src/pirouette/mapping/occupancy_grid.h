@@ -275,6 +275,10 @@ class OccupancyGrid {
   // and whether or not it changed in this frame: for floor known to be free
   // for certain, such as under the robot's footprint.
   void SetFree(const core::CellIndex& c);
+  // Sets cell `c` (if on the grid) to the occupied clamp, hit from two
+  // places (Solid), whatever it held: for an obstacle known for certain, such
+  // as one the robot has touched.
+  void SetSolid(const core::CellIndex& c);
 
  private:
   struct Cell {

@@ -194,6 +194,18 @@ TEST(OccupancyGrid, SetFreeIsTheFreeClampEvenInAFrameAlreadyUsed) {
   EXPECT_FALSE(grid.Apply({3, 3}, CellUpdate::kHit));  // still this frame's one change
 }
 
+TEST(OccupancyGrid, SetSolidIsTheOccupiedClampFromTwoPlaces) {
+  OccupancyGrid grid = SmallGrid();
+  grid.BeginFrame();
+  ASSERT_TRUE(grid.Apply({3, 3}, CellUpdate::kMiss));
+  grid.SetSolid({3, 3});
+  grid.SetSolid({30, 3});  // off the grid: nothing
+  EXPECT_NEAR(grid.Probability({3, 3}), 0.97, 1e-6);
+  EXPECT_EQ(grid.State({3, 3}), CellState::kOccupied);
+  EXPECT_TRUE(grid.Solid({3, 3}));
+  EXPECT_FALSE(grid.Solid({4, 3}));
+}
+
 TEST(OccupancyGrid, GrowthKeepsValuesAndWorldPositions) {
   OccupancyGrid grid(GridGeometry(0.01, {0.3, -0.2}, 20, 10));
   const GridGeometry before = grid.geometry();

@@ -345,6 +345,35 @@ std::size_t StopAtSolidCells(const OccupancyGrid& grid, const Eigen::Vector2d& f
   return stopped;
 }
 
+// Ends each blind ray just before the first cell on it that the grid holds
+// occupied (this frame's hits in): the base of what fills the view lies in
+// front of an obstacle the map already has in the way, never behind it. Left
+// whole, a blind ray from a robot beside a thin wall runs on through it and
+// marks the floor on its far side blind, known without being seen; in a
+// maze of such walls that made corridors "known" and shut their way in for
+// the planner (generated maze 102 ended complete at coverage 0.49; 0.94 with
+// the cut). Returns how many it shortened. Rays are in cell units.
+std::size_t StopBlindAtOccupiedCells(const OccupancyGrid& grid, const Eigen::Vector2d& from,
+                                     std::vector<Ray>& rays) {
+  const core::GridGeometry& geometry = grid.geometry();
+  std::size_t stopped = 0;
+  for (Ray& r : rays) {
+    double stop = -1.0;
+    Traverse(geometry.width(), from, r.end, r.include_end, [&](std::size_t flat, double t) {
+      if (grid.State(geometry.Unflat(flat)) != CellState::kOccupied) return true;
+      stop = t;
+      return false;
+    });
+    if (stop < 0.0) continue;
+    ++stopped;
+    constexpr double kJustShort = 1e-6;
+    r.length = std::max(0.0, stop * r.length - kJustShort);
+    r.end = from + r.length * r.direction;
+    r.include_end = r.length > 0.0;
+  }
+  return stopped;
+}
+
 // Turns the rays into cell units.
 void ToCells(const OccupancyGrid& grid, FrameRays& rays) {
   const core::GridGeometry& geometry = grid.geometry();
@@ -388,6 +417,7 @@ std::size_t InsertProfile(OccupancyGrid& grid, const core::ObstacleProfile& prof
   ToCells(grid, rays);
   StopAtSolidCells(grid, from, rays.miss);
   std::size_t applied = ApplyHits(grid, rays.miss);
+  StopBlindAtOccupiedCells(grid, from, rays.blind);
   applied += WalkPass<CellUpdate::kBlind>(grid, from, rays.blind);
   applied += WalkPass<CellUpdate::kMiss>(grid, from, rays.miss);
   return applied;

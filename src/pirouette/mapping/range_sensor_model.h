@@ -26,7 +26,9 @@ inline constexpr double kMaxFillGapRad = core::DegToRad(5.0);
 //           hit, nothing beyond;
 //   kClear: every cell out to the range (the maximum range) takes a miss;
 //   kBlind: every cell out to the range takes the blind update (the base of
-//           whatever fills the view is somewhere in there, unseen).
+//           whatever fills the view is somewhere in there, unseen), up to
+//           the first cell the grid holds occupied once the frame's hits
+//           are in: the base stands in front of it, not behind.
 // A hit or clear reading whose ray passes through a solid cell
 // (OccupancyGrid::Solid: a wall hit from two places) more than three cells
 // short of its end stops just before it: no miss on the wall or beyond, and

@@ -134,6 +134,18 @@ TEST(InsertProfile, BlindReadingIsHalfWayOutToTheRange) {
   EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.065)), 0.6, 1e-6);
 }
 
+TEST(InsertProfile, BlindReadingStopsAtAWallTheMapHolds) {
+  // A robot beside a thin wall it mapped from afar: its view is filled, the
+  // base of what fills it under the camera. The floor beyond the wall stays
+  // unknown, for the robot to see when it gets there.
+  OccupancyGrid grid = MetreGrid();
+  InsertProfile(grid, Profile({{0.0, 0.05, ReadingKind::kHit}}), kFacingNorth);
+  ASSERT_EQ(grid.State(At(grid, 0.005, 0.055)), CellState::kOccupied);
+  InsertProfile(grid, Profile({{0.0, 0.12, ReadingKind::kBlind}}), kFacingNorth);
+  EXPECT_EQ(grid.State(At(grid, 0.005, 0.055)), CellState::kOccupied);
+  for (int i = 6; i <= 12; ++i) EXPECT_FALSE(grid.Known(At(grid, 0.005, 0.005 + i * kCell))) << i;
+}
+
 TEST(InsertProfile, HitWinsOverMissInTheSameFrame) {
   // A clear reading passes through the cell where another one hits; whichever
   // comes first in the profile, the hit counts and the cell changes once.
@@ -157,7 +169,8 @@ TEST(InsertProfile, HitWinsOverBlindAndBlindOverMiss) {
                 kFacingNorth);
   EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.055)), 0.7, 1e-6);  // hit
   EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.025)), 0.6, 1e-6);  // blind over miss
-  EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.085)), 0.6, 1e-6);
+  // The blind area stops at the hit: what fills the view stands in front of it.
+  EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.085)), 0.4, 1e-6);
   EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.155)), 0.4, 1e-6);  // beyond the blind area
 }
 
@@ -305,6 +318,7 @@ std::vector<double> IdealFrameOn(const OccupancyGrid& before, const ObstacleProf
   const GridGeometry& g = before.geometry();
 
   enum Mark { kNone, kMiss, kBlind, kHit };
+  const double hit = std::log(0.7 / 0.3);
   std::vector<Mark> marks(g.CellCount(), kNone);
   const Eigen::Vector2d p = (pose.translation() - g.origin()) / g.resolution();
   const CellIndex robot = g.CellOf(pose.translation());
@@ -352,16 +366,29 @@ std::vector<double> IdealFrameOn(const OccupancyGrid& before, const ObstacleProf
         continue;
       }
       const Mark mark = pass == ReadingKind::kBlind ? kBlind : kMiss;
+      // A blind ray stops just before the first cell occupied once the
+      // frame's hits are in.
+      double blind_stop = std::numeric_limits<double>::infinity();
+      if (pass == ReadingKind::kBlind) {
+        box(end, [&](int x, int y) {
+          const double t = Entry(p, c.q, x, y);
+          const double l = before.LogOdds({x, y}) + (marks[g.Flat({x, y})] == kHit ? hit : 0.0);
+          const bool occupied = (before.Known({x, y}) || marks[g.Flat({x, y})] == kHit) &&
+                                l > std::log(kOccupiedThreshold / (1.0 - kOccupiedThreshold));
+          if (t >= 0.0 && occupied) blind_stop = std::min(blind_stop, t);
+        });
+      }
       box(end, [&](int x, int y) {
         const bool is_end = CellIndex{x, y} == end;
         if (is_end && c.hit) return;
         if (is_end && c.cut && (c.q - p).norm() == 0.0) return;
-        if (!is_end && Entry(p, c.q, x, y) < 0.0) return;
+        const double t = Entry(p, c.q, x, y);
+        if (!is_end && t < 0.0) return;
+        if (std::isfinite(blind_stop) && !(t >= 0.0 && t < blind_stop)) return;
         if (marks[g.Flat({x, y})] == kNone) marks[g.Flat({x, y})] = mark;
       });
     }
   }
-  const double hit = std::log(0.7 / 0.3);
   const double miss = std::log(0.4 / 0.6);
   const double clamp_min = std::log(0.12 / 0.88);
   const double clamp_max = std::log(0.97 / 0.03);

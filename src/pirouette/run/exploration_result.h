@@ -53,6 +53,7 @@ struct ExplorationResult {
   int frames = 0;
   int blocked_looks = 0;     // looks that found the way blocked
   int backups = 0;           // backing up to see a blind area's base or off a contact
+  int contacts = 0;          // straight moves the robot's disc stopped by touching something
   int contact_backoffs = 0;  // of them, off a contact that stopped a move at once
   int probes = 0;            // legs across the camera's blind ring (ProbeAcrossTheBlindRing)
   double path_length_m = 0.0;

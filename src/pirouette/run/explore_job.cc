@@ -155,6 +155,7 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   run["blocked_looks"] = result.blocked_looks;
   run["backups"] = result.backups;
   run["probes"] = result.probes;
+  run["contacts"] = result.contacts;
   if (!eval.is_null()) run["eval"] = eval;
   return run;
 }

@@ -315,6 +315,7 @@ bool Explorer::Drive(double metres) {
   result_.path_length_m += std::abs(outcome.achieved);
   result_.path.push_back(mapper_.ToMap(outcome.odometry));
   if (outcome.stopped_at_contact) {
+    ++result_.contacts;
     mapper_.AddContact(outcome.odometry);
     Look();
     // Stopped at once: the robot was already touching something, most

@@ -342,9 +342,18 @@ void FrameMapper::Insert(const core::ObstacleProfile& profile, const core::Pose2
 void FrameMapper::InsertBump(mapping::OccupancyGrid& grid, const core::Pose2& map_T_robot,
                              double radius_m, double cell_m) {
   core::ObstacleProfile bump;
+  const double range = radius_m + 0.5 * cell_m;
   bump.max_range_m = radius_m + cell_m;
-  bump.readings.push_back({0.0, radius_m + 0.5 * cell_m, core::ReadingKind::kHit});
+  bump.readings.push_back({0.0, range, core::ReadingKind::kHit});
   mapping::InsertProfile(grid, bump, map_T_robot);
+  // The touch is certain, as no camera reading is: the cell is solid, so that
+  // frames that see on through it (a wall that passes for the floor, the
+  // cause of most contacts) neither clear it nor map free floor past it
+  // (OccupancyGrid::Solid). Left a single hit, the next look's misses
+  // cleared it, and a robot could drive into the same wall again and again.
+  const std::optional<core::CellIndex> c =
+      grid.geometry().CellAt(map_T_robot.translation() + range * map_T_robot.Direction());
+  if (c) grid.SetSolid(*c);
 }
 
 void FrameMapper::AddContact(const core::Pose2& odom_T_robot) {
