@@ -11,6 +11,23 @@
 namespace pirouette::vision {
 namespace {
 
+// Of the columns whose cell on row `bottom` passes `pass` (one flag per
+// cell), the share that pass it in every cell from there up to the top row:
+// one appearance from the bottom of the view to its top. 0 when no column
+// passes at the bottom.
+double FullColumnShare(const cv::Mat1b& pass, int bottom) {
+  int present = 0;
+  int full = 0;
+  for (int u = 0; u < pass.cols; ++u) {
+    if (pass(bottom, u) == 0) continue;
+    ++present;
+    int v = bottom - 1;
+    while (v >= 0 && pass(v, u) != 0) --v;
+    if (v < 0) ++full;
+  }
+  return present == 0 ? 0.0 : static_cast<double>(full) / present;
+}
+
 // The working grid's factor for frames `width` wide.
 int ScaleFor(int width, int working_width) {
   return working_width > 0 ? std::max(1, width / working_width) : 1;
@@ -72,6 +89,12 @@ void AppearanceSegmenter::MakeGrid(cv::Size frame,
       break;
     }
   }
+  for (int v = grid.cells.height - 1; v >= 0; --v) {
+    if (cv::countNonZero(grid.reference.row(v)) > 0) {
+      grid.reference_bottom = v;
+      break;
+    }
+  }
   grid.seeds = grid.reference.clone();
   grid.everywhere = cv::Mat1b(grid.cells, std::uint8_t{255});
   if (options_.bottom_rows > 0) {
@@ -109,17 +132,43 @@ void AppearanceSegmenter::LearnTexture(const TextureHistogram& frame) {
     texture_histogram_[i] = keep * texture_histogram_[i] + (1.0 - keep) * frame[i];
   }
   texture_learnt_ = true;
+  texture_likelihood_ = TextureLikelihood(texture_histogram_);
+}
+
+std::array<float, AppearanceSegmenter::kTextureBins> AppearanceSegmenter::TextureLikelihood(
+    const TextureHistogram& histogram) {
   // Smoothed by [1 2 1] / 4, then over its maximum.
   std::array<double, kTextureBins> smoothed{};
   for (int i = 0; i < kTextureBins; ++i) {
-    const double lo = texture_histogram_[std::max(0, i - 1)];
-    const double hi = texture_histogram_[std::min(kTextureBins - 1, i + 1)];
-    smoothed[i] = 0.25 * lo + 0.5 * texture_histogram_[i] + 0.25 * hi;
+    const double lo = histogram[std::max(0, i - 1)];
+    const double hi = histogram[std::min(kTextureBins - 1, i + 1)];
+    smoothed[i] = 0.25 * lo + 0.5 * histogram[i] + 0.25 * hi;
   }
   const double peak = *std::max_element(smoothed.begin(), smoothed.end());
+  std::array<float, kTextureBins> likelihood{};
   for (int i = 0; i < kTextureBins; ++i) {
-    texture_likelihood_[i] = peak > 0.0 ? static_cast<float>(smoothed[i] / peak) : 0.0f;
+    likelihood[i] = peak > 0.0 ? static_cast<float>(smoothed[i] / peak) : 0.0f;
   }
+  return likelihood;
+}
+
+bool AppearanceSegmenter::OneAppearanceToTheTop(const ReferenceSample& sample,
+                                                const cv::Mat1w& colour_bins,
+                                                const cv::Mat1b& texture) {
+  const std::vector<float>& colour = sample.model.likelihoods();
+  const std::array<float, kTextureBins> texture_likelihood = TextureLikelihood(sample.texture);
+  const auto colour_min = static_cast<float>(options_.colour_threshold);
+  const auto texture_min = static_cast<float>(options_.texture_threshold);
+  sample_pass_.create(grid_.cells);
+  for (int v = 0; v < grid_.cells.height; ++v) {
+    const std::uint16_t* b = colour_bins[v];
+    const std::uint8_t* t = texture[v];
+    std::uint8_t* out = sample_pass_[v];
+    for (int u = 0; u < grid_.cells.width; ++u) {
+      out[u] = colour[b[u]] >= colour_min && texture_likelihood[t[u]] >= texture_min ? 255 : 0;
+    }
+  }
+  return FullColumnShare(sample_pass_, grid_.reference_bottom) >= options_.open_top_share;
 }
 
 void AppearanceSegmenter::Bootstrap(const cv::Mat1w& colour_bins, const cv::Mat1b& texture,
@@ -137,9 +186,16 @@ void AppearanceSegmenter::Bootstrap(const cv::Mat1w& colour_bins, const cv::Mat1
   sample.texture = *texture_histogram;
   sample.model.Learn(sample.colour);
   const auto threshold = static_cast<float>(options_.colour_threshold);
-  // A frame of one appearance all over (a wall filling the view, or open
-  // floor to the top) says nothing of which appearance is the floor's: it
-  // does not vote.
+  // A frame that shows no end of its reference region's appearance says
+  // nothing of which appearance is the floor's, and does not vote: the floor
+  // ends at the base of whatever stands on it, below something else. So not
+  // a frame whose reference appearance (colour and texture) runs from the
+  // bottom of the view to its top in most of the columns it is in at the
+  // bottom: a wall filling the view, even with the floor beside it ending at
+  // the wall's far part (a maze's dead end), or open floor to the top. Nor,
+  // the first frame aside, one whose reference colours cover most of the
+  // frame (one appearance all over).
+  if (OneAppearanceToTheTop(sample, colour_bins, texture)) return;
   if (colour_.learnt() &&
       sample.model.Coverage(FloorColourModel::Histogram(colour_bins, grid_.everywhere),
                             threshold) >= options_.open_top_share) {

@@ -81,7 +81,9 @@ struct AppearanceSegmenterOptions {
   // the floor's the whole frame is called floor. The model does not learn
   // from such a frame, so that it does not drift to the wall's colour; and
   // while bootstrapping, a reference region whose colours cover this share of
-  // its whole frame (one appearance all over) does not vote.
+  // its whole frame (one appearance all over), or whose appearance runs from
+  // the bottom of the view to its top in this share of the columns it is in
+  // at the bottom (it ends nowhere), does not vote.
   double open_top_share = 0.9;
   // Two reference regions agree when each one's colour model calls at least
   // this share of the other's pixels floor-coloured (at colour_threshold).
@@ -108,7 +110,8 @@ struct AppearanceSegmenterOptions {
 // does not end (no boundary: a wall fills the view) teaches nothing. The first frame alone may be
 // filled by an obstacle (a wall a few cm away), so over the first pirouette the model follows the
 // appearance most reference regions agree on, the majority vote of the paper's assumption that the
-// reference region is floor (a frame of one appearance all over does not vote); run::FrameMapper
+// reference region is floor (a frame that shows no end of its reference appearance does not vote:
+// one appearance all over, or one running from the bottom of the view to its top); run::FrameMapper
 // maps the first pirouette's frames again once the vote is in (SettlingFrames).
 //
 // A floor's grain fades with range: once it is finer than a pixel, the far
@@ -156,10 +159,11 @@ class AppearanceSegmenter : public FloorSegmenter {
     cv::Size cells;
     std::optional<EdgeDetector> edges;
     std::optional<TextureFeature> texture;
-    cv::Mat1b reference;    // the reference region's mask, on the grid
-    int reference_top = 0;  // the reference region's highest row
-    cv::Mat1b seeds;        // where floor components may start: reference or bottom rows
-    cv::Mat1b everywhere;   // all 255
+    cv::Mat1b reference;       // the reference region's mask, on the grid
+    int reference_top = 0;     // the reference region's highest row
+    int reference_bottom = 0;  // ...and its lowest
+    cv::Mat1b seeds;           // where floor components may start: reference or bottom rows
+    cv::Mat1b everywhere;      // all 255
   };
   void MakeGrid(cv::Size frame, const std::optional<camera::CameraModel>& camera);
 
@@ -168,6 +172,8 @@ class AppearanceSegmenter : public FloorSegmenter {
                                                      const cv::Mat1b& region);
   void LearnTexture(const cv::Mat1b& bins, const cv::Mat1b& region);
   void LearnTexture(const TextureHistogram& frame);
+  // A texture histogram's likelihoods: smoothed by [1 2 1] / 4, over its peak.
+  static std::array<float, kTextureBins> TextureLikelihood(const TextureHistogram& histogram);
   // Keeps the reference region's appearance during the first pirouette and
   // relearns the model when most regions so far agree on another appearance.
   void Bootstrap(const cv::Mat1w& colour_bins, const cv::Mat1b& texture,
@@ -191,6 +197,12 @@ class AppearanceSegmenter : public FloorSegmenter {
     TextureHistogram texture{};
     FloorColourModel model;  // learnt from `colour` alone
   };
+  // Whether the sample's appearance (colour and texture, at the thresholds
+  // the floor is tested at) fills, from the reference region's bottom row to
+  // the top row, at least options.open_top_share of the columns it is in at
+  // that bottom row.
+  bool OneAppearanceToTheTop(const ReferenceSample& sample, const cv::Mat1w& colour_bins,
+                             const cv::Mat1b& texture);
 
   AppearanceSegmenterOptions options_;
   bool has_camera_;  // frames then have the camera's size, and a fixed grid
@@ -222,6 +234,7 @@ class AppearanceSegmenter : public FloorSegmenter {
   cv::Mat1b floor_;
   cv::Mat1b learn_region_;
   cv::Mat1b strong_seeds_;
+  cv::Mat1b sample_pass_;           // OneAppearanceToTheTop's cells
   cv::Mat1b unresolved_cells_;      // on the grid, grown by a cell
   cv::Mat1b unresolved_;            // at the frame's size
   std::vector<std::uint8_t> pass_;  // per colour bin: passes the colour test

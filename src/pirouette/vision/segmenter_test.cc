@@ -325,6 +325,36 @@ TEST(AppearanceSegmenterTest, AViewOfOneAppearanceAllOverDoesNotVote) {
   EXPECT_EQ(segmenter.Segment(FloorWithBox())(110, 80), 255);
 }
 
+// A wall a few cm away seen past its end: the wall (WallCloseUp's) fills
+// the view from the bottom row to the top, reference region and all, except
+// on the right, where the floor (FloorWithBox's, an eighth of the view) ends
+// at the base of the wall's far part.
+cv::Mat3b WallWithTheFloorBesideIt() {
+  cv::Mat3b image = WallCloseUp();
+  const cv::Rect beside(130, kWallBottom, 30, 120 - kWallBottom);
+  FloorWithBox()(beside).copyTo(image(beside));
+  return image;
+}
+
+TEST(AppearanceSegmenterTest, AViewOfAWallToTheTopOfTheViewDoesNotVote) {
+  // A pirouette started in a maze's dead end: the first view and two more
+  // are a wall from the bottom of the view to its top, with the floor
+  // beside or below it; two views show the floor ending at a wall. Over the
+  // whole frame the wall's views are not one appearance (the floor's corner),
+  // but in every column the wall is in at the bottom it runs to the top: the
+  // wall shows no end, nothing stands on it, and it does not vote.
+  const cv::Mat3b wall_view = WallWithTheFloorBesideIt();
+  AppearanceSegmenter segmenter(std::nullopt, AppearanceSegmenterOptions{});
+  for (int frame = 0; frame < 3; ++frame) segmenter.Segment(wall_view);
+  EXPECT_GE(segmenter.colour_model().Likelihood(cv::Vec3b(220, 225, 230)), 0.1f)
+      << "the first view is learnt as the floor: nothing else is known yet";
+  for (int frame = 0; frame < 2; ++frame) segmenter.Segment(FloorWithBox());
+  EXPECT_LT(segmenter.colour_model().Likelihood(cv::Vec3b(220, 225, 230)), 0.1f);
+  const cv::Mat1b mask = segmenter.Segment(FloorWithBox());
+  EXPECT_EQ(mask(110, 80), 255);
+  EXPECT_EQ(mask(10, 80), 0);
+}
+
 TEST(EdgeMapTest, MarksEdgesAlongTheWorldVerticalOnly) {
   cv::Mat3b grey(60, 60, cv::Vec3b(50, 50, 50));
   grey(cv::Rect(30, 0, 30, 30)).setTo(cv::Vec3b(200, 200, 200));  // a vertical step, top half
