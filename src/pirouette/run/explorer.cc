@@ -186,7 +186,14 @@ void Explorer::Loop() {
     }
     if (!plan && corroboration_trips_ < corroboration_budget_.value_or(0)) {
       run::StageTimer timer(result_.times.plan_s);
-      plan = planner_->Next(CorroborationMap(planning), Pose());
+      const mapping::TrinaryMap corroboration = CorroborationMap(planning);
+      plan = planner_->Next(corroboration, Pose());
+      if (!plan && fine_planner_) {
+        // As when exploring: the floor to see again may lie past a doorway
+        // the coarse grid closes (the robot came in through it).
+        plan = fine_planner_->Next(corroboration, Pose());
+        if (plan) planner = fine_planner_.get();
+      }
       corroborating = plan.has_value();
       if (corroborating) ++corroboration_trips_;
     }

@@ -111,7 +111,9 @@ class Explorer {
   // (OccupancyGrid::ToMapOfRecord), which calls free only what two places saw
   // free, covers the floor. Each such goal is tried once: given up once the
   // robot has looked all round there, or at once when a look blocks the way;
-  // at most a quarter as many trips as pirouettes before the first.
+  // at most a quarter as many trips as pirouettes before the first. Planned
+  // on the coarse grid, else on the map's own cells (a doorway the coarse
+  // grid closes may lie between the robot and that floor).
   mapping::TrinaryMap CorroborationMap(const mapping::TrinaryMap& planning) const;
 
   // A plan out of the camera's blind area at the robot's feet, when the
