@@ -339,9 +339,9 @@ cv::Mat3b WallWithTheFloorBesideIt() {
 TEST(AppearanceSegmenterTest, AViewOfAWallToTheTopOfTheViewDoesNotVote) {
   // A pirouette started in a maze's dead end: the first view and two more
   // are a wall from the bottom of the view to its top, with the floor
-  // beside or below it; two views show the floor ending at a wall. Over the
-  // whole frame the wall's views are not one appearance (the floor's corner),
-  // but in every column the wall is in at the bottom it runs to the top: the
+  // beside it; two views show the floor ending at a wall. Over the whole
+  // frame the wall's views are not one appearance (the floor's strip), but
+  // in every column the wall is in at the bottom it runs to the top: the
   // wall shows no end, nothing stands on it, and it does not vote.
   const cv::Mat3b wall_view = WallWithTheFloorBesideIt();
   AppearanceSegmenter segmenter(std::nullopt, AppearanceSegmenterOptions{});
