@@ -117,8 +117,10 @@ class OccupancyGrid {
   // kOccupied above kOccupiedThreshold, kFree below kFreeThreshold, else
   // kUnknown; kUnknown off the grid and for cells never touched.
   CellState State(const core::CellIndex& c) const {
-    return geometry_.Contains(c) ? StateOf(cells_[geometry_.Flat(c)]) : CellState::kUnknown;
+    return geometry_.Contains(c) ? StateAt(geometry_.Flat(c)) : CellState::kUnknown;
   }
+  // The same for the row-major index `flat` < geometry().CellCount(), unchecked.
+  CellState StateAt(std::size_t flat) const { return StateOf(cells_[flat]); }
   // Whether any update ever touched the cell (false off the grid).
   bool Known(const core::CellIndex& c) const {
     return geometry_.Contains(c) && cells_[geometry_.Flat(c)].stamp != 0;

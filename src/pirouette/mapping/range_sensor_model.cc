@@ -319,6 +319,15 @@ double CheckRay(const OccupancyGrid& grid, const Eigen::Vector2d& from, Ray& r, 
   return stop;
 }
 
+// Ends ray `r` (from `from`, cell units) just short of `stop` along it, so
+// that the cell it then enters is the first it does not pass through.
+void EndJustShortOf(const Eigen::Vector2d& from, double stop, Ray& r) {
+  constexpr double kJustShort = 1e-6;
+  r.length = std::max(0.0, stop - kJustShort);
+  r.end = from + r.length * r.direction;
+  r.include_end = r.length > 0.0;
+}
+
 // Shortens each miss ray that passes through a solid cell more than
 // kSolidStopMarginCells short of its end to end just before that cell, no
 // hit at its end; returns how many it shortened. Rays are in cell units.
@@ -336,11 +345,8 @@ std::size_t StopAtSolidCells(const OccupancyGrid& grid, const Eigen::Vector2d& f
         if (stop < 0.0) return;
         ++stopped;
         // The cell before the solid one is the last the ray passes through.
-        constexpr double kJustShort = 1e-6;
-        r.length = std::max(0.0, stop - kJustShort);
-        r.end = from + r.length * r.direction;
+        EndJustShortOf(from, stop, r);
         r.end_hit = false;
-        r.include_end = r.length > 0.0;
       });
   return stopped;
 }
@@ -360,16 +366,13 @@ std::size_t StopBlindAtOccupiedCells(const OccupancyGrid& grid, const Eigen::Vec
   for (Ray& r : rays) {
     double stop = -1.0;
     Traverse(geometry.width(), from, r.end, r.include_end, [&](std::size_t flat, double t) {
-      if (grid.State(geometry.Unflat(flat)) != CellState::kOccupied) return true;
+      if (grid.StateAt(flat) != CellState::kOccupied) return true;
       stop = t;
       return false;
     });
     if (stop < 0.0) continue;
     ++stopped;
-    constexpr double kJustShort = 1e-6;
-    r.length = std::max(0.0, stop * r.length - kJustShort);
-    r.end = from + r.length * r.direction;
-    r.include_end = r.length > 0.0;
+    EndJustShortOf(from, stop * r.length, r);
   }
   return stopped;
 }

@@ -82,19 +82,10 @@ void AppearanceSegmenter::MakeGrid(cv::Size frame,
   }
   grid.texture.emplace(grid.scale, options_.texture_window, blur_order_, full_corrector);
   grid.reference = ReferenceRegionMask(grid.cells, options_.reference);
-  grid.reference_top = grid.cells.height;
-  for (int v = 0; v < grid.cells.height; ++v) {
-    if (cv::countNonZero(grid.reference.row(v)) > 0) {
-      grid.reference_top = v;
-      break;
-    }
-  }
-  for (int v = grid.cells.height - 1; v >= 0; --v) {
-    if (cv::countNonZero(grid.reference.row(v)) > 0) {
-      grid.reference_bottom = v;
-      break;
-    }
-  }
+  // The rows the region spans (cv::boundingRect of a mask: its non-zero pixels).
+  const cv::Rect rows = cv::boundingRect(grid.reference);
+  grid.reference_top = rows.empty() ? grid.cells.height : rows.y;
+  grid.reference_bottom = rows.empty() ? 0 : rows.y + rows.height - 1;
   grid.seeds = grid.reference.clone();
   grid.everywhere = cv::Mat1b(grid.cells, std::uint8_t{255});
   if (options_.bottom_rows > 0) {
