@@ -11,6 +11,15 @@
 namespace pirouette::vision {
 namespace {
 
+// The refinement's two classes are compared bin by bin, so both are smoothed
+// alike: one kernel, not each class's own lightness spread (the rest of a
+// frame, walls, furniture and the world beyond, spreads over all of L*, and
+// smoothed by that spread its density would lose to the floor's everywhere).
+FloorColourModelOptions TwoClassOptions(FloorColourModelOptions options) {
+  options.lightness_spread = 0.0;
+  return options;
+}
+
 // Of the columns whose cell on row `bottom` passes `pass` (one flag per
 // cell), the share that pass it in every cell from there up to the top row:
 // one appearance from the bottom of the view to its top. 0 when no column
@@ -55,8 +64,8 @@ AppearanceSegmenter::AppearanceSegmenter(const std::optional<camera::CameraModel
       blur_order_(BinomialOrder(options.blur_sigma)),
       grow_blur_order_(BinomialOrder(options.grow_blur_sigma)),
       colour_(options.colour),
-      inside_(options.colour),
-      outside_(options.colour) {
+      inside_(TwoClassOptions(options.colour)),
+      outside_(TwoClassOptions(options.colour)) {
   CV_Assert(options.blur_sigma >= 0.0 && options.texture_window >= 1 && options.close_size >= 0);
   CV_Assert(options.bootstrap_frames >= 0 && options.bootstrap_agreement >= 0.0 &&
             options.bootstrap_agreement <= 1.0);

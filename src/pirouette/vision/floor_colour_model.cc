@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <numeric>
 #include <opencv2/imgproc.hpp>
 
 namespace pirouette::vision {
@@ -58,11 +61,19 @@ void SmoothAxis(const double* in, double* out, int count, int size, int stride) 
   }
 }
 
-// One [1 2 1] / 4 pass along each axis (L, then a*, then b*) of `h`, in
+// `passes` [1 2 1] / 4 passes along L* of `h`, in place; `scratch` holds kBins values.
+void SmoothLightness(std::vector<double>& h, std::vector<double>& scratch, int passes) {
+  for (int pass = 0; pass < passes; ++pass) {
+    SmoothAxis(h.data(), scratch.data(), 1, kL, kC * kC);
+    h.swap(scratch);
+  }
+}
+
+// One [1 2 1] / 4 pass along each chroma axis (a*, then b*) of `h`, in
 // place; `scratch` holds kBins values.
-void Smooth(std::vector<double>& h, std::vector<double>& scratch) {
-  SmoothAxis(h.data(), scratch.data(), 1, kL, kC * kC);
-  SmoothAxis(scratch.data(), h.data(), kL, kC, kC);
+void SmoothChroma(std::vector<double>& h, std::vector<double>& scratch) {
+  SmoothAxis(h.data(), scratch.data(), kL, kC, kC);
+  h.swap(scratch);
   // Along b* (stride 1): the rows of kC values, their interiors at once.
   const double* in = h.data();
   double* out = scratch.data();
@@ -89,6 +100,7 @@ FloorColourModel::FloorColourModel(const FloorColourModelOptions& options)
     : options_(options), histogram_(kBins, 0.0), density_(kBins, 0.0f), likelihood_(kBins, 0.0f) {
   CV_Assert(options.forgetting >= 0.0 && options.forgetting <= 1.0);
   CV_Assert(options.smoothing_passes >= 0);
+  CV_Assert(options.lightness_spread >= 0.0);
 }
 
 int FloorColourModel::Bin(const cv::Vec3b& bgr) {
@@ -209,11 +221,30 @@ double FloorColourModel::Coverage(const std::vector<double>& histogram, float th
   return covered;
 }
 
+int FloorColourModel::LightnessPasses() const {
+  // The variance of the histogram's L* marginal, in bins².
+  double mean = 0.0;
+  double square = 0.0;
+  constexpr std::ptrdiff_t kPlane = static_cast<std::ptrdiff_t>(kC) * kC;
+  const auto* h = histogram_.data();
+  for (int l = 0; l < kL; ++l, h += kPlane) {
+    const double mass = std::accumulate(h, h + kPlane, 0.0);
+    mean += l * mass;
+    square += static_cast<double>(l) * l * mass;
+  }
+  const double variance = std::max(0.0, square - mean * mean);
+  const auto passes = static_cast<int>(std::lround(2.0 * options_.lightness_spread * variance));
+  // (At most 2 · lightness_spread · 64 passes, a floor half black, half
+  // white; a pass over the histogram costs about 0.05 ms.)
+  return std::max(passes, options_.smoothing_passes);
+}
+
 void FloorColourModel::UpdateLikelihood() {
   std::vector<double>& smoothed = smoothed_;
   smoothed = histogram_;
   scratch_.resize(kBins);
-  for (int pass = 0; pass < options_.smoothing_passes; ++pass) Smooth(smoothed, scratch_);
+  SmoothLightness(smoothed, scratch_, LightnessPasses());
+  for (int pass = 0; pass < options_.smoothing_passes; ++pass) SmoothChroma(smoothed, scratch_);
   const double peak = *std::max_element(smoothed.begin(), smoothed.end());
   for (int i = 0; i < kBins; ++i) {
     density_[i] = static_cast<float>(smoothed[i]);

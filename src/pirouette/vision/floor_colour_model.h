@@ -13,17 +13,27 @@ struct FloorColourModelOptions {
   // Histogram smoothing: passes of a [1 2 1] / 4 kernel along each axis, so
   // that colours near those seen also count as floor.
   int smoothing_passes = 1;
+  // Along L*, the smoothing is as wide as the floor's own lightness spread:
+  // round(2 · lightness_spread · σ²) passes (σ² the variance of the
+  // learnt histogram's L* marginal, in bins; each pass adds half a bin² of
+  // variance), at least smoothing_passes. A plain
+  // floor then refuses a thing a shade darker or lighter, while a patterned or
+  // unevenly lit one keeps the tolerance its own spread shows.
+  double lightness_spread = 1.0;
 };
 
 // The floor's colour, learnt online and never configured: a joint histogram
-// in CIE L*a*b* with fine chroma bins (a*, b*) and coarse lightness bins (L*),
-// so that the model separates colours well while shading and light changes,
-// which move mostly L*, move a floor pixel by one lightness bin at most. The
-// first Learn sets it; later ones blend in with exponential forgetting so the
-// model follows the light. A pure function of the frames given (deterministic).
+// in CIE L*a*b* with fine chroma bins (a*, b*) and lightness bins (L*) of
+// 6.25 L* units, smoothed along L* as widely as the floor's own lightness
+// varies (options.lightness_spread), so that shading and light changes, which
+// move mostly L*, stay within the floor's model while a plain floor's model
+// refuses a thing a shade off it (with bins of 12.5 L* units and one smoothing
+// pass it did not: docs/worlds.md, fix 15). The first Learn sets it; later ones
+// blend in with exponential forgetting so the model follows the light. A pure
+// function of the frames given (deterministic).
 class FloorColourModel {
  public:
-  static constexpr int kLightnessBins = 8;
+  static constexpr int kLightnessBins = 16;
   static constexpr int kChromaBins = 32;
   static constexpr int kBins = kLightnessBins * kChromaBins * kChromaBins;
 
@@ -84,6 +94,8 @@ class FloorColourModel {
 
  private:
   void UpdateLikelihood();
+  // The passes of smoothing along L* (options.lightness_spread).
+  int LightnessPasses() const;
 
   FloorColourModelOptions options_;
   bool learnt_ = false;

@@ -46,6 +46,37 @@ TEST(FloorColourModelTest, LearntColourIsFloorAndOthersAreNot) {
   EXPECT_GT(model.Likelihood(cv::Vec3b(135, 162, 180)), 0.2f);
 }
 
+// A dark grey floor with a fine grain (values 52-60), and a box of its
+// colour whose face is lit a shade darker (40: about 7 L* units), as in
+// generated clutter world 102 (docs/worlds.md, fix 15).
+cv::Mat3b GrainyGrey(int low, int high) {
+  cv::Mat3b image(20, 20);
+  for (int v = 0; v < image.rows; ++v) {
+    for (int u = 0; u < image.cols; ++u) {
+      const auto g = static_cast<std::uint8_t>(low + (u * 7 + v * 3) % (high - low + 1));
+      image(v, u) = cv::Vec3b(g, static_cast<std::uint8_t>(g + 2), g);
+    }
+  }
+  return image;
+}
+
+TEST(FloorColourModelTest, ThePlainFloorsToleranceInLightnessIsItsOwnSpread) {
+  const cv::Mat1b all(20, 20, std::uint8_t{255});
+  const cv::Vec3b face(40, 42, 40);
+  FloorColourModel plain;
+  plain.Learn(GrainyGrey(52, 60), all);
+  EXPECT_GT(plain.Likelihood(cv::Vec3b(56, 58, 56)), 0.5f);
+  // 0.77 with bins of 12.5 L* units and one smoothing pass.
+  EXPECT_LT(plain.Likelihood(face), 0.25f);
+  // The same grain, half of it in the light (values 92-100): the floor's own
+  // lightness spread widens the model along L*, and the face is more likely.
+  cv::Mat3b image = GrainyGrey(52, 60);
+  GrainyGrey(92, 100)(cv::Rect(0, 0, 20, 10)).copyTo(image(cv::Rect(0, 0, 20, 10)));
+  FloorColourModel broad;
+  broad.Learn(image, all);
+  EXPECT_GT(broad.Likelihood(face), 1.5f * plain.Likelihood(face));
+}
+
 TEST(FloorColourModelTest, LearnsOnlyInsideTheRegion) {
   FloorColourModel model;
   cv::Mat3b image(10, 10, kRed);
