@@ -14,11 +14,11 @@ struct FloorColourModelOptions {
   // that colours near those seen also count as floor.
   int smoothing_passes = 1;
   // Along L*, the smoothing is as wide as the floor's own lightness spread:
-  // round(2 · lightness_spread · σ²) passes (σ² the variance of the
-  // learnt histogram's L* marginal, in bins; each pass adds half a bin² of
-  // variance), at least smoothing_passes. A plain
-  // floor then refuses a thing a shade darker or lighter, while a patterned or
-  // unevenly lit one keeps the tolerance its own spread shows.
+  // round(2 · lightness_spread · σ²) passes (σ² the variance of the learnt
+  // histogram's L* marginal, in bins; each pass adds half a bin² of
+  // variance), at least smoothing_passes. A plain floor then refuses a thing
+  // a shade darker or lighter, while a patterned or unevenly lit one keeps
+  // the tolerance its own spread shows. 0: smoothing_passes along L* too.
   double lightness_spread = 1.0;
 };
 
