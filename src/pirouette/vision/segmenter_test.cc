@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pirouette/sim/renderer.h"
+#include "pirouette/testing/bgr_frame.h"
 #include "pirouette/testing/test_camera.h"
 #include "pirouette/vision/appearance_segmenter.h"
 #include "pirouette/vision/edge_map.h"
@@ -47,17 +48,6 @@ int BoundaryRow(const cv::Mat1b& mask, int u) {
     if (mask(v, u) == 0) return v;
   }
   return -1;
-}
-
-cv::Mat3b ToBgr(const core::ImageRgb8& rgb) {
-  cv::Mat3b bgr(rgb.height(), rgb.width());
-  for (int v = 0; v < rgb.height(); ++v) {
-    for (int u = 0; u < rgb.width(); ++u) {
-      const core::Rgb p = rgb.At(u, v);
-      bgr(v, u) = cv::Vec3b(p.b, p.g, p.r);
-    }
-  }
-  return bgr;
 }
 
 // The image row of the floor segment centre + s · along, |s| ≤ half_length,
@@ -149,7 +139,7 @@ TEST_P(SegmenterMethodTest, RenderedBoxBaseWithThePaperCamera) {
       sim::Light{}, robot);
   sim::Renderer renderer(world, camera, sim::RenderOptions{});
   const core::Pose2 world_T_robot(robot_xy.x(), robot_xy.y(), 0.0);
-  const cv::Mat3b bgr = ToBgr(renderer.Render(world_T_robot));
+  const cv::Mat3b bgr = testing::BgrFrame(renderer.Render(world_T_robot));
   auto segmenter = MakeFloorSegmenter(GetParam(), camera);
   const cv::Mat1b mask = segmenter->Segment(bgr);
 
@@ -180,7 +170,7 @@ TEST(DefaultSegmenterTest, ABoxAShadeDarkerThanAPlainFloorEndsIt) {
       sim::Light{0.46, Eigen::Vector3d(0.71, 0.11, -1.0), 0.7}, robot);
   sim::Renderer renderer(world, camera, sim::RenderOptions{});
   const core::Pose2 world_T_robot(robot_xy.x(), robot_xy.y(), 0.0);
-  const cv::Mat3b bgr = ToBgr(renderer.Render(world_T_robot));
+  const cv::Mat3b bgr = testing::BgrFrame(renderer.Render(world_T_robot));
   auto segmenter = MakeFloorSegmenter(SegmentationMethod::kDefault, camera);
   const cv::Mat1b mask = segmenter->Segment(bgr);
 

@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "pirouette/sim/renderer.h"
+#include "pirouette/testing/bgr_frame.h"
 #include "pirouette/testing/test_camera.h"
 
 namespace pirouette::vision {
@@ -19,15 +20,7 @@ cv::Mat3b RenderUniformFloor(const camera::CameraModel& camera) {
   sim::RenderOptions options;
   options.noise_sigma = 0.0;
   sim::Renderer renderer(world, camera, options);
-  const core::ImageRgb8 image = renderer.Render(core::Pose2(20.0, 20.0, 0.0));
-  cv::Mat3b bgr(image.height(), image.width());
-  for (int v = 0; v < image.height(); ++v) {
-    for (int u = 0; u < image.width(); ++u) {
-      const core::Rgb p = image.At(u, v);
-      bgr(v, u) = cv::Vec3b(p.b, p.g, p.r);
-    }
-  }
-  return bgr;
+  return testing::BgrFrame(renderer.Render(core::Pose2(20.0, 20.0, 0.0)));
 }
 
 double ChannelSpread(const cv::Mat3b& image, int channel) {
