@@ -46,6 +46,9 @@ constexpr double kReachedCells = 0.25;
 // Bisections for the point of a leg at the view distance of the goal: 30
 // halve the leg to a billionth, far below a cell.
 constexpr int kViewPointBisections = 30;
+// A goal is in view when no obstacle lies within this many map cells of the
+// line of sight to it (StopWhereTheGoalIsInView).
+constexpr double kSightLineHalfCells = 1.0;
 
 }  // namespace
 
@@ -202,7 +205,7 @@ void Explorer::Loop() {
       if (!ProbeAcrossTheBlindRing(planning) && !StepAwayToSeeNearby()) result_.status = "complete";
       continue;
     }
-    StopWhereTheGoalIsInView(*plan);
+    StopWhereTheGoalIsInView(*plan, planning);
     plan_ = plan->waypoints_world;
     Snapshot();
     if (plan->waypoints_world.empty() && AtLastPirouette()) {
@@ -367,9 +370,17 @@ Explorer::FollowOutcome Explorer::Follow(const explore::Plan& plan) {
       const core::ObstacleProfile& profile = Look().profile;
       const explore::LookAhead::Finding finding = look_.Blocking(profile, leg);
       const explore::LookVerdict verdict = finding.verdict;
+      // A view filled by something near vouches for nothing; the map may.
+      // Its corridor is the look's own (points within radius - cell of the
+      // leg, CorridorKnownFree adding the cells their rim touches), as the
+      // planner keeps cell centres a radius from occupied ones: with the
+      // disc's whole rim, a robot the planner put beside a wall's end (its
+      // disc 3 mm off the face) was refused every move there (maze 108,
+      // `stuck` after 40 refusals).
       if (verdict == explore::LookVerdict::kBlind &&
           !mapping::CorridorKnownFree(mapper_.grid().ToExploredMap(), pose.translation(),
-                                      pose.translation() + leg * Pose().Direction(), radius_m_)) {
+                                      pose.translation() + leg * Pose().Direction(),
+                                      radius_m_ - cell_m_)) {
         BackUpToSee();
         ++result_.blocked_looks;
         return FollowOutcome::kBlocked;
@@ -466,28 +477,55 @@ std::optional<explore::Plan> Explorer::PlanOutOfTheBlindArea(const mapping::Trin
   return planner_->Next(map, pose);
 }
 
-void Explorer::StopWhereTheGoalIsInView(explore::Plan& plan) const {
+void Explorer::StopWhereTheGoalIsInView(explore::Plan& plan,
+                                        const mapping::TrinaryMap& planning) const {
   const double view = ViewDistance();
+  const mapping::OccupancyGrid& occupancy = mapper_.grid();
+  const core::GridGeometry& g = planning.geometry;
+  // In view: past the camera's near range and within the view distance, and
+  // no obstacle the map holds (a blind area is not one) across the line of
+  // sight short of the goal's own coarse cell.
+  const auto in_view = [&](const Eigen::Vector2d& p) {
+    const Eigen::Vector2d to_goal = plan.goal_world - p;
+    const double distance = to_goal.norm();
+    if (distance > view || distance < look_.options().near_m) return false;
+    const double short_of_goal = distance - 0.5 * coarse_m_;
+    if (short_of_goal <= 0.0) return true;
+    const Eigen::Vector2d end = p + to_goal * (short_of_goal / distance);
+    return !core::AnyCellNearSegment(
+        g, p, end, kSightLineHalfCells * cell_m_, [&](const core::CellIndex& c) {
+          return g.Contains(c) && planning.cells[g.Flat(c)] == mapping::CellState::kOccupied &&
+                 !occupancy.BlindOnly(c);
+        });
+  };
   Eigen::Vector2d from = Pose().translation();
   std::vector<Eigen::Vector2d> kept;
   for (const Eigen::Vector2d& to : plan.waypoints_world) {
-    if ((from - plan.goal_world).norm() <= view) break;
-    if ((to - plan.goal_world).norm() > view) {
+    if (in_view(from)) break;
+    const Eigen::Vector2d d = to - from;
+    // The first point of the leg in view, sampled every half cell (sight
+    // lines open and close along a leg: a distance alone is not monotone
+    // enough to bisect the whole leg).
+    const int samples = std::max(1, static_cast<int>(std::ceil(d.norm() / (0.5 * cell_m_))));
+    int first = 1;
+    while (first <= samples && !in_view(from + (static_cast<double>(first) / samples) * d)) ++first;
+    if (first > samples) {
       kept.push_back(to);
       from = to;
       continue;
     }
-    // The point of the leg from -> to at the view distance of the goal.
-    const Eigen::Vector2d d = to - from;
-    double lo = 0.0;
-    double hi = 1.0;
+    // The point between the last sample out of view and the first in it.
+    double lo = static_cast<double>(first - 1) / samples;
+    double hi = static_cast<double>(first) / samples;
     for (int i = 0; i < kViewPointBisections; ++i) {
       const double mid = 0.5 * (lo + hi);
-      ((from + mid * d - plan.goal_world).norm() > view ? lo : hi) = mid;
+      (in_view(from + mid * d) ? hi : lo) = mid;
     }
     kept.emplace_back(from + hi * d);
     break;
   }
+  // (Where no point of it is in view, the whole path is kept: the robot
+  // goes to the last free coarse cell before the goal and looks from there.)
   plan.waypoints_world = std::move(kept);
 }
 

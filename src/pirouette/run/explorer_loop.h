@@ -168,9 +168,12 @@ class Explorer {
 
   // The robot need not drive into the unknown to see it, and cannot see it
   // from too near (the camera sees no floor nearer than its near range):
-  // the plan ends at the first point of its path within the view distance
-  // of the goal.
-  void StopWhereTheGoalIsInView(explore::Plan& plan) const;
+  // the plan ends at the first point of its path from which the goal is in
+  // view: past the near range, within the view distance, and with no
+  // obstacle of `planning` (a wall's end at a maze's corner; a blind area is
+  // not one) across the line of sight to the goal's coarse cell. Where no
+  // point of the path is, the whole path is followed.
+  void StopWhereTheGoalIsInView(explore::Plan& plan, const mapping::TrinaryMap& planning) const;
 
   ExplorationProgress Progress() const;
 
