@@ -43,8 +43,8 @@ constexpr double kMinTurnRad = 1e-9;
 // A waypoint is reached within this many cells; a straight move that made
 // less than this stopped at once.
 constexpr double kReachedCells = 0.25;
-// Bisections for the point of a leg at the view distance of the goal: 30
-// halve the leg to a billionth, far below a cell.
+// Bisections for the point of a leg where the goal comes into view, between
+// two samples half a cell apart: 30 take it far below a cell.
 constexpr int kViewPointBisections = 30;
 // A goal is in view when no obstacle lies within this many map cells of the
 // line of sight to it (StopWhereTheGoalIsInView).
