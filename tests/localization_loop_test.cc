@@ -195,14 +195,14 @@ TEST(LocalizationLoopTest, TheMapFollowsTheGraphAsIfMadeAgainFromNothing) {
 // Under odometry error the robot can end a move touching a wall it mapped a
 // few centimetres off, beside its front: every move that way then stops at
 // once, and without backing off such a contact a run was seen to repeat it
-// 40 times in a row. In this run (the maze, seed 13, 5% noise) the explorer
-// backs off such a contact once, and the run completes. (Seeds 3, then 1,
-// were this run before; since obstacles are grown as their cells' squares
-// (2026-12-06) a move that stops at once is rare: of seeds 1-14 only 13
-// backs off, and all complete.)
+// 40 times in a row. In this run (the maze, seed 2, 5% noise) the explorer
+// backs off such a contact once, and the run completes. (Seeds 3, 1, then
+// 13 were this run before; since plans end where their goal is in view
+// (docs/worlds.md, fix 16), of seeds 1-7 and 13 seeds 2, 4 and 6 back off,
+// and all complete.)
 TEST(LocalizationLoopTest, ARobotStuckAgainstAWallBacksOffAndGoesOn) {
   const sim::World world = io::LoadWorldFile(PIROUETTE_WORLDS_DIR "/maze.yaml");
-  const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.05, 13);
+  const ExplorationResult result = ExploreWith(world, LocalizeKind::kScan, 0.05, 2);
   EXPECT_EQ(result.status, "complete") << result.reason;
   EXPECT_GT(result.contact_backoffs, 0);
 }
