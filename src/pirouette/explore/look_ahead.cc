@@ -13,7 +13,7 @@ double LookAhead::LongestCheckedMove() const {
 
 LookAhead::Finding LookAhead::Blocking(const core::ObstacleProfile& profile,
                                        double distance_m) const {
-  const double r = options_.radius_m - options_.cell_m;
+  const double r = SweptHalfWidth();
   const Eigen::Vector2d end(distance_m, 0.0);
   Finding finding;
   bool blind = false;

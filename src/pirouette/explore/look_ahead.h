@@ -39,6 +39,10 @@ class LookAhead {
   // The longest forward move one frame can vouch for: its swept disc must end
   // within the max range.
   double LongestCheckedMove() const;
+  // The half width of the swept corridor the look checks: points within
+  // radius_m - cell_m of the move's segment (the planner keeps cell centres
+  // a radius from occupied ones; the rim's cell is the map's business).
+  double SweptHalfWidth() const { return options_.radius_m - options_.cell_m; }
 
   struct Finding {
     LookVerdict verdict = LookVerdict::kClear;

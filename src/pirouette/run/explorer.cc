@@ -370,17 +370,15 @@ Explorer::FollowOutcome Explorer::Follow(const explore::Plan& plan) {
       const core::ObstacleProfile& profile = Look().profile;
       const explore::LookAhead::Finding finding = look_.Blocking(profile, leg);
       const explore::LookVerdict verdict = finding.verdict;
-      // A view filled by something near vouches for nothing; the map may.
-      // Its corridor is the look's own (points within radius - cell of the
-      // leg, CorridorKnownFree adding the cells their rim touches), as the
-      // planner keeps cell centres a radius from occupied ones: with the
-      // disc's whole rim, a robot the planner put beside a wall's end (its
-      // disc 3 mm off the face) was refused every move there (maze 108,
-      // `stuck` after 40 refusals).
+      // A view filled by something near vouches for nothing; the map may,
+      // for the look's own corridor (CorridorKnownFree adding the cells its
+      // rim touches): with the disc's whole rim, a robot the planner put
+      // beside a wall's end (its disc 3 mm off the face) was refused every
+      // move there (maze 108, `stuck` after 40 refusals).
       if (verdict == explore::LookVerdict::kBlind &&
           !mapping::CorridorKnownFree(mapper_.grid().ToExploredMap(), pose.translation(),
                                       pose.translation() + leg * Pose().Direction(),
-                                      radius_m_ - cell_m_)) {
+                                      look_.SweptHalfWidth())) {
         BackUpToSee();
         ++result_.blocked_looks;
         return FollowOutcome::kBlocked;

@@ -129,7 +129,7 @@ bool Explorer::ProbeAcrossTheBlindRing(const mapping::TrinaryMap& planning) {
   if (reachable(here)) return false;  // the planner's business, not a probe's
   const mapping::OccupancyGrid& occupancy = mapper_.grid();
   const core::GridGeometry& g = occupancy.geometry();
-  const double half = radius_m_ - cell_m_;  // the look's swept corridor
+  const double half = look_.SweptHalfWidth();  // the look's swept corridor
   // Whether a cell within `half` of the segment here -> to was hit (a blind
   // area or nothing seen is what a probe crosses; a hit is not).
   const auto hit_on_the_way = [&](const Eigen::Vector2d& to) {
