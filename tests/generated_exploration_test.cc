@@ -73,10 +73,15 @@ INSTANTIATE_TEST_SUITE_P(
 // blind areas, grown by the radius, close every way out of the robot's
 // coarse cell. Once the first pirouette ended the run there ("complete" at
 // coverage 0.002); the robot now probes across the blind ring along the
-// corridor it saw (Explorer::ProbeAcrossTheBlindRing) and goes on mapping. It
-// still falls far short of the bounds (docs/worlds.md, "Still open", 1), so
-// this checks only that it gets out, and maps no false free floor doing it.
-TEST(BoxedInMazeTest, ProbesAcrossTheBlindRingOutOfItsStart) {
+// corridor it saw (Explorer::ProbeAcrossTheBlindRing) and goes on mapping.
+// Later its exploring runs out of plans with much of the maze unseen, and
+// the second looks (trips to see again from a second place the floor one
+// place saw free) carry it on: their budget, a quarter of the pirouettes,
+// once fixed when exploring first ran out, stopped them at coverage 0.40;
+// reckoned on the whole run, they take it to 0.54 (docs/worlds.md, fix 17).
+// It still falls far short of the bounds (docs/worlds.md, "Still open", 1),
+// so this checks that it gets out and goes on, and maps no false free floor.
+TEST(BoxedInMazeTest, ProbesOutOfItsStartAndSecondLooksCarryItOn) {
   const pirouette::testing::TempDir dir("pirouette_boxed_in_maze_test");
   const nlohmann::json j = GenerateAndExplore(Generated{"maze", 108, ""}, dir);
   ASSERT_FALSE(j.is_null());
@@ -84,7 +89,7 @@ TEST(BoxedInMazeTest, ProbesAcrossTheBlindRingOutOfItsStart) {
   EXPECT_GE(j.at("probes").get<int>(), 1);
   EXPECT_GE(j.at("pirouettes").get<int>(), 5);
   const nlohmann::json& e = j.at("eval");
-  EXPECT_GE(e.at("coverage").get<double>(), 0.05);
+  EXPECT_GE(e.at("coverage").get<double>(), 0.5);
   EXPECT_LE(e.at("false_free").get<double>(), 0.005);
 }
 

@@ -35,8 +35,10 @@ constexpr int kFailuresPerGiveUp = 4;
 constexpr int kMaxIdlePlans = 500;
 // Trips a run makes at most to see again from a second place the floor one
 // place saw free (Explorer::CorroborationMap), as a fraction of the
-// pirouettes made before the first: a bound on what they cost (in a maze,
-// whose corridors each stop sees alone, they would double the run).
+// pirouettes made so far: a bound on what they cost (in a maze, whose
+// corridors each stop sees alone, they would double the run). With the
+// trips' own pirouettes counted, trips <= pirouettes / 4 keeps them under a
+// third of the exploring pirouettes.
 constexpr int kCorroborationTripsPerPirouettes = 4;
 // Turns smaller than this are not made (radians).
 constexpr double kMinTurnRad = 1e-9;
@@ -183,11 +185,12 @@ void Explorer::Loop() {
       fine = plan.has_value();
     }
     bool corroborating = false;  // the plan goes to see from a second place what one saw free
-    if (!plan && !corroboration_budget_) {
-      corroboration_budget_ = (result_.pirouettes + kCorroborationTripsPerPirouettes - 1) /
-                              kCorroborationTripsPerPirouettes;
-    }
-    if (!plan && corroboration_trips_ < corroboration_budget_.value_or(0)) {
+    // The budget grows with the run: exploring may go on after a trip (in
+    // a maze, from a place that sees round a corner the stops before did
+    // not), and its pirouettes leave more floor seen from one place.
+    const int corroboration_budget = (result_.pirouettes + kCorroborationTripsPerPirouettes - 1) /
+                                     kCorroborationTripsPerPirouettes;
+    if (!plan && corroboration_trips_ < corroboration_budget) {
       run::StageTimer timer(result_.times.plan_s);
       const mapping::TrinaryMap corroboration = CorroborationMap(planning);
       plan = planner_->Next(corroboration, Pose());

@@ -111,7 +111,7 @@ class Explorer {
   // (OccupancyGrid::ToMapOfRecord), which calls free only what two places saw
   // free, covers the floor. Each such goal is tried once: given up once the
   // robot has looked all round there, or at once when a look blocks the way;
-  // at most a quarter as many trips as pirouettes before the first. Planned
+  // at most a quarter as many trips as pirouettes so far. Planned
   // on the coarse grid, else on the map's own cells (a doorway the coarse
   // grid closes may lie between the robot and that floor).
   mapping::TrinaryMap CorroborationMap(const mapping::TrinaryMap& planning) const;
@@ -251,7 +251,6 @@ class Explorer {
   int step_aways_ = 0;
   std::set<std::pair<WorldCell, int>> probes_tried_;  // (place, heading) probed
   int corroboration_trips_ = 0;
-  std::optional<int> corroboration_budget_;    // set when the trips begin
   bool looked_since_drive_ = false;            // a frame was taken where the robot stands
   std::vector<std::size_t> pirouette_frames_;  // each pirouette's first frame
   Clock::time_point start_;
