@@ -4,7 +4,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace pirouette::explore {
@@ -33,12 +35,16 @@ std::vector<Offset> DiscOffsets(double radius_cells) {
   return offsets;
 }
 
+void CheckRadius(double robot_radius_m, const char* what) {
+  if (!std::isfinite(robot_radius_m) || robot_radius_m < 0.0) {
+    throw std::invalid_argument(std::string(what) + ": the robot radius must be finite and >= 0");
+  }
+}
+
 }  // namespace
 
 mapping::TrinaryMap MakeConfigurationSpace(const mapping::TrinaryMap& map, double robot_radius_m) {
-  if (!std::isfinite(robot_radius_m) || robot_radius_m < 0.0) {
-    throw std::invalid_argument("MakeConfigurationSpace: the robot radius must be finite and >= 0");
-  }
+  CheckRadius(robot_radius_m, "MakeConfigurationSpace");
   const core::GridGeometry& g = map.geometry;
   const int w = g.width();
   const int h = g.height();
@@ -66,6 +72,26 @@ mapping::TrinaryMap MakeConfigurationSpace(const mapping::TrinaryMap& map, doubl
     }
   }
   return cspace;
+}
+
+int ClearFootprint(mapping::TrinaryMap& map, const Eigen::Vector2d& robot_world,
+                   double robot_radius_m) {
+  CheckRadius(robot_radius_m, "ClearFootprint");
+  const core::GridGeometry& g = map.geometry;
+  const std::optional<core::CellIndex> here = g.CellAt(robot_world);
+  if (!here) return 0;
+  int freed = 0;
+  // The cells whose squares lie within the radius of this cell's centre are
+  // those into which this one's would grow: the same offsets.
+  for (const Offset& o : DiscOffsets(robot_radius_m / g.resolution())) {
+    const core::CellIndex c{here->x + o.dx, here->y + o.dy};
+    if (!g.Contains(c)) continue;
+    CellState& state = map.cells[g.Flat(c)];
+    if (state != CellState::kOccupied) continue;
+    state = CellState::kFree;
+    ++freed;
+  }
+  return freed;
 }
 
 }  // namespace pirouette::explore

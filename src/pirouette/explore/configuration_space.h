@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Core>
+
 #include "pirouette/mapping/trinary_map.h"
 
 namespace pirouette::explore {
@@ -19,5 +21,18 @@ namespace pirouette::explore {
 // Throws std::invalid_argument unless the radius is finite and >= 0.
 // O(cells + boundary cells × disc cells).
 mapping::TrinaryMap MakeConfigurationSpace(const mapping::TrinaryMap& map, double robot_radius_m);
+
+// The robot stands where it stands: marks free every occupied cell of `map`
+// whose square lies nearer than `robot_radius_m` to the centre of the cell
+// holding `robot_world` (what MakeConfigurationSpace grows into that cell),
+// so that the configuration space leaves the robot's own cell free. A wall
+// mapped a cell thicker than it is (a cell of wall error) beside a robot
+// whose disc clears the true wall by millimetres otherwise puts the robot's
+// cell inside the grown wall, and no plan starts where it stands; costmaps
+// clear the footprint likewise (navigation2's footprint clearing). Nothing
+// when `robot_world` is off the map. Throws std::invalid_argument unless the
+// radius is finite and >= 0. Returns how many cells it freed.
+int ClearFootprint(mapping::TrinaryMap& map, const Eigen::Vector2d& robot_world,
+                   double robot_radius_m);
 
 }  // namespace pirouette::explore

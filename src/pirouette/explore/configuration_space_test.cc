@@ -114,10 +114,49 @@ TEST(ConfigurationSpaceTest, EqualsBruteForceOnRandomMaps) {
   }
 }
 
+TEST(ConfigurationSpaceTest, ClearingTheFootprintFreesTheRobotsCellAndNothingBeyondItsDisc) {
+  // Generated maze 109: a robot of radius 4 cm stopped 5.2 cm from a wall's
+  // true face, which the map drew a cell and a half thicker than it is; its
+  // own cell lay inside the grown wall and no plan started there.
+  mapping::TrinaryMap map = Uniform(40, 40, 0.01, CellState::kFree);
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x <= 11; ++x) map.cells[map.geometry.Flat({x, y})] = CellState::kOccupied;
+  }
+  map.cells[map.geometry.Flat({30, 30})] = CellState::kUnknown;
+  const double radius = 0.04;
+  const Eigen::Vector2d robot(0.153, 0.204);  // 3.3 cm from the wall's face at x = 0.12
+  ASSERT_EQ(MakeConfigurationSpace(map, radius).At({15, 20}), CellState::kOccupied);
+  mapping::TrinaryMap cleared = map;
+  const int freed = ClearFootprint(cleared, robot, radius);
+  EXPECT_GT(freed, 0);
+  EXPECT_EQ(MakeConfigurationSpace(cleared, radius).At({15, 20}), CellState::kFree);
+  // Only occupied cells whose squares lie within the radius of the robot's
+  // cell's centre (0.155, 0.205) changed; the unknown cell stays unknown.
+  int changed = 0;
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 40; ++x) {
+      if (cleared.At({x, y}) == map.At({x, y})) continue;
+      ++changed;
+      EXPECT_EQ(map.At({x, y}), CellState::kOccupied);
+      EXPECT_EQ(cleared.At({x, y}), CellState::kFree);
+      const Eigen::Vector2d q(std::clamp(0.155, x * 0.01, (x + 1) * 0.01),
+                              std::clamp(0.205, y * 0.01, (y + 1) * 0.01));
+      EXPECT_LT((Eigen::Vector2d(0.155, 0.205) - q).norm(), radius) << x << ", " << y;
+    }
+  }
+  EXPECT_EQ(changed, freed);
+  EXPECT_EQ(cleared.At({30, 30}), CellState::kUnknown);
+  // Off the map: nothing.
+  mapping::TrinaryMap off = map;
+  EXPECT_EQ(ClearFootprint(off, {-1.0, 0.2}, radius), 0);
+  EXPECT_EQ(off.cells, map.cells);
+}
+
 TEST(ConfigurationSpaceTest, RejectsBadRadius) {
-  const mapping::TrinaryMap map = Uniform(2, 2, 0.1, CellState::kFree);
+  mapping::TrinaryMap map = Uniform(2, 2, 0.1, CellState::kFree);
   EXPECT_THROW(MakeConfigurationSpace(map, -0.1), std::invalid_argument);
   EXPECT_THROW(MakeConfigurationSpace(map, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(ClearFootprint(map, {0.1, 0.1}, -0.1), std::invalid_argument);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include "pirouette/camera/range_resolution.h"
 #include "pirouette/core/input_error.h"
+#include "pirouette/explore/configuration_space.h"
 #include "pirouette/explore/frontier_planner.h"
 #include "pirouette/explore/moves.h"
 #include "pirouette/robot/robot_error.h"
@@ -417,6 +418,9 @@ mapping::TrinaryMap Explorer::PlanningMap() const {
     ForEachUnknownNear(map, *last_pirouette_, NearBlindRadius(),
                        [&](std::size_t i) { map.cells[i] = mapping::CellState::kFree; });
   }
+  // Where the robot stands nothing is in its way, whatever the map says of
+  // the cells under its disc (a wall mapped a cell thick beside it).
+  explore::ClearFootprint(map, Pose().translation(), radius_m_);
   return map;
 }
 

@@ -87,7 +87,8 @@ class Explorer {
 
   // The map the planner sees: unknown cells the robot cannot see from here
   // (under the camera, within its near range, when it has just looked all
-  // round) and those it gave up on count as free.
+  // round) and those it gave up on count as free, and so do the cells under
+  // the robot's disc (explore::ClearFootprint: a plan starts where it stands).
   mapping::TrinaryMap PlanningMap() const;
 
   // The planning map without what single looks alone say is in the way
