@@ -155,7 +155,7 @@ TEST(CorroborationTest, SecondLooksPassADoorwayTheCoarseGridCloses) {
 }
 
 // Maze 109: a plan's end left the robot at a corridor's corner with its disc
-// 5 mm clear of a wall's true face, which the map drew a cell thicker; its
+// 12 mm clear of a wall's true face, which the map drew 1.2 cm thicker; its
 // own cell lay inside the wall as the configuration space grows it, no
 // planner could start there, and the run ended `complete` after 27 stops
 // (207 moves) at coverage 0.09 with most of the maze beyond. The planning

@@ -116,8 +116,9 @@ TEST(ConfigurationSpaceTest, EqualsBruteForceOnRandomMaps) {
 
 TEST(ConfigurationSpaceTest, ClearingTheFootprintFreesTheRobotsCellAndNothingBeyondItsDisc) {
   // Generated maze 109: a robot of radius 4 cm stopped 5.2 cm from a wall's
-  // true face, which the map drew a cell and a half thicker than it is; its
-  // own cell lay inside the grown wall and no plan started there.
+  // true face, which the map drew 1.2 cm thicker than it is; its own cell
+  // lay inside the grown wall and no plan started there. Here the map's
+  // face is 3.3 cm off.
   mapping::TrinaryMap map = Uniform(40, 40, 0.01, CellState::kFree);
   for (int y = 0; y < 40; ++y) {
     for (int x = 0; x <= 11; ++x) map.cells[map.geometry.Flat({x, y})] = CellState::kOccupied;
