@@ -29,8 +29,12 @@ mapping::TrinaryMap MakeConfigurationSpace(const mapping::TrinaryMap& map, doubl
 // mapped a cell thicker than it is (a cell of wall error) beside a robot
 // whose disc clears the true wall by millimetres otherwise puts the robot's
 // cell inside the grown wall, and no plan starts where it stands; costmaps
-// clear the footprint likewise (navigation2's footprint clearing). Nothing
-// when `robot_world` is off the map. Throws std::invalid_argument unless the
+// clear the footprint likewise (navigation2's footprint clearing). The map
+// itself is not enough: mapping::MarkFootprintFree frees in the occupancy
+// grid only the cells whose centres lie under the disc, as a map of record
+// should, while a cell whose square merely reaches into the disc still
+// blocks the robot's cell here. For a plan only. Nothing when `robot_world`
+// is off the map. Throws std::invalid_argument unless the
 // radius is finite and >= 0. Returns how many cells it freed.
 int ClearFootprint(mapping::TrinaryMap& map, const Eigen::Vector2d& robot_world,
                    double robot_radius_m);
