@@ -101,9 +101,19 @@ TEST(BoxedInMazeTest, ProbesOutOfItsStartAndSecondLooksCarryItOn) {
 // the wall's appearance as the floor's, and the run ended at its first stop
 // (coverage 0.001). A view whose appearance runs from the bottom of the view
 // to its top shows no end of it and no longer votes
-// (vision::AppearanceSegmenter, docs/worlds.md fix 13). The maze is still
-// far from the bounds (docs/worlds.md, "Still open", 1): this checks that
-// the run gets out of its first stop on the floor, with no false free floor.
+// (vision::AppearanceSegmenter, docs/worlds.md fix 13).
+//
+// Later the robot ends its exploring in a pocket whose only way out, past a
+// wall's end, a phantom speck and the wall's end drawn a cell long close on
+// the map: no plan for the robot's disc passes there, and the run ended
+// `complete` at coverage 0.45 with half the maze beyond. The last plan is
+// now one for a robot a cell narrower (docs/worlds.md fix 19), which goes
+// through. Further on, the robot's disc came to rest on a wall's end with
+// a wall less than the camera's near range behind it, and every move that
+// way stopped at once, 40 in a row (`stuck`): a contact now backs off as
+// far as the known-free floor allows, down to a radius. Checks the whole
+// story: off the first stop, through the pocket's closed way out, to the
+// end without getting stuck (coverage 0.92 today; still short of 0.98).
 TEST(DeadEndMazeTest, TheFirstPirouettesVoteFindsTheFloor) {
   const pirouette::testing::TempDir dir("pirouette_dead_end_maze_test");
   const nlohmann::json j = GenerateAndExplore(Generated{"maze", 103, ""}, dir);
@@ -111,7 +121,7 @@ TEST(DeadEndMazeTest, TheFirstPirouettesVoteFindsTheFloor) {
   EXPECT_EQ(j.at("status"), "complete");
   EXPECT_GE(j.at("pirouettes").get<int>(), 10);
   const nlohmann::json& e = j.at("eval");
-  EXPECT_GE(e.at("coverage").get<double>(), 0.05);
+  EXPECT_GE(e.at("coverage").get<double>(), 0.8);
   EXPECT_LE(e.at("false_free").get<double>(), 0.005);
 }
 

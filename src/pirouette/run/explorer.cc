@@ -41,6 +41,13 @@ constexpr int kMaxIdlePlans = 500;
 // trips' own pirouettes counted, trips <= pirouettes / 4 keeps them under a
 // third of the exploring pirouettes.
 constexpr int kCorroborationTripsPerPirouettes = 4;
+// The wall error a plan through a passage the robot's own radius closes
+// allows for (Explorer::narrower_planner_), in map cells: walls are mapped
+// up to a cell thicker than they are (wall_error_m, a cell at most on the
+// generated worlds within the bounds); the rest of the radius must stay at
+// least kMinNarrowerRadiusShare of it, or there is no such planner.
+constexpr double kWallErrorCells = 1.0;
+constexpr double kMinNarrowerRadiusShare = 0.5;
 // Turns smaller than this are not made (radians).
 constexpr double kMinTurnRad = 1e-9;
 // A waypoint is reached within this many cells; a straight move that made
@@ -83,12 +90,17 @@ Explorer::Explorer(robot::Robot& robot, const RobotDescription& description,
                  ? explore::MakeFrontierPlanner(planner_options_)
                  : explore::MakeDistanceTransformPlanner(planner_options_);
   coarse_m_ = planner_options_.CoarseFactor(cell_m_) * cell_m_;
-  if (planner_options_.CoarseFactor(cell_m_) > 1) {
-    explore::PlannerOptions fine = planner_options_;
-    fine.coarse_factor = 1;
-    fine_planner_ = options.planner == PlannerKind::kFrontier
-                        ? explore::MakeFrontierPlanner(fine)
-                        : explore::MakeDistanceTransformPlanner(fine);
+  const auto make = [&](const explore::PlannerOptions& o) {
+    return options.planner == PlannerKind::kFrontier ? explore::MakeFrontierPlanner(o)
+                                                     : explore::MakeDistanceTransformPlanner(o);
+  };
+  explore::PlannerOptions fine = planner_options_;
+  fine.coarse_factor = 1;
+  if (planner_options_.CoarseFactor(cell_m_) > 1) fine_planner_ = make(fine);
+  explore::PlannerOptions narrower = fine;
+  narrower.robot_radius_m = radius_m_ - kWallErrorCells * cell_m_;
+  if (narrower.robot_radius_m >= kMinNarrowerRadiusShare * radius_m_) {
+    narrower_planner_ = make(narrower);
   }
 }
 
@@ -173,7 +185,10 @@ void Explorer::Loop() {
       verifying = plan.has_value();
     }
     explore::Planner* planner = planner_.get();  // the planner that made the plan
-    bool fine = false;                           // the plan passes where the coarse grid is closed
+    // The plan passes where the coarse grid (or the robot's radius, less a
+    // cell of wall error) closes the way: a look that blocks it gives its
+    // goal up at once.
+    bool fine = false;
     if (!plan && fine_planner_) {
       // The coarse grid closes a passage whose clearance is under about two
       // coarse cells (explore::DefaultCoarseFactor): a doorway or a maze's
@@ -203,6 +218,15 @@ void Explorer::Loop() {
       }
       corroborating = plan.has_value();
       if (corroborating) ++corroboration_trips_;
+    }
+    if (!plan && narrower_planner_) {
+      // The last plan: through a passage that one cell of wall error on each
+      // side closes (see narrower_planner_). A look that blocks it gives its
+      // goal up at once, as for the fine planner's.
+      run::StageTimer timer(result_.times.plan_s);
+      plan = narrower_planner_->Next(planning, Pose());
+      if (plan) planner = narrower_planner_.get();
+      fine = plan.has_value();
     }
     if (!plan) {
       plan_.clear();

@@ -185,17 +185,18 @@ class Explorer {
 
   // --- Recovery (explorer_recovery.cc).
 
-  // Backs straight up by the camera's near blind range where the map knows
-  // the floor behind is free within `half_width_m` of the path (counted in
-  // backups); returns whether it did.
-  bool BackUpOverKnownFree(double half_width_m);
+  // Backs straight up by `back` metres where the map knows the floor behind
+  // is free within `half_width_m` of the path (counted in backups); returns
+  // whether it did.
+  bool BackUpOverKnownFree(double half_width_m, double back);
 
   // The paper's unfinished active vision: an obstacle's base hides in the
   // blind area under the camera, so back up, where the map knows the floor
   // behind is free, and look again.
   void BackUpToSee();
 
-  // Backs away from a contact where the floor behind is known free within
+  // Backs away from a contact, by the camera's near range or less (a radius
+  // at least), where the floor behind is known free within
   // half the robot's radius of its path: a robot touching a wall it has
   // mapped a few centimetres off (odometry error) overlaps that wall in the
   // map, so the whole disc's corridor would refuse the very back-off that
@@ -225,7 +226,9 @@ class Explorer {
   bool ProbeAcrossTheBlindRing(const mapping::TrinaryMap& planning);
 
   // Back to the start over known-free floor: the distance transform from the
-  // start's coarse cell alone, the unknown counted as blocked.
+  // start's coarse cell alone, the unknown counted as blocked, the cells under
+  // the robot's disc where it stands and at the start counted free
+  // (explore::ClearFootprint).
   // True when the robot reached its start.
   bool ReturnHome();
 
@@ -246,6 +249,15 @@ class Explorer {
   // The same planner on a coarse grid of one map cell, for the plans the
   // coarse grid has none of (see Loop); none where the coarse factor is 1.
   std::unique_ptr<explore::Planner> fine_planner_;
+  // The fine planner for a robot a cell of wall error narrower
+  // (kWallErrorCells), for a plan when no other has one (see Loop): a maze's
+  // corridor of three radii leaves the robot's centre a band of about two
+  // cells, which a wall mapped a cell thick on each side closes, and a
+  // phantom speck beside a wall's end closes a passage likewise; the run
+  // would end complete with the maze beyond it unseen. The look before every
+  // move checks each leg against what the camera sees, and the bumper stops
+  // the rest. None where the radius is under two cells.
+  std::unique_ptr<explore::Planner> narrower_planner_;
   std::optional<Eigen::Vector2d> last_pirouette_;
   core::Pose2 start_pose_;
   std::set<WorldCell> given_up_;  // unknown cells the robot gave up seeing

@@ -13,6 +13,7 @@
 
 #include "pirouette/core/grid_geometry.h"
 #include "pirouette/explore/coarse_grid.h"
+#include "pirouette/explore/configuration_space.h"
 #include "pirouette/explore/distance_transform.h"
 #include "pirouette/explore/path.h"
 #include "pirouette/mapping/occupancy_grid.h"
@@ -24,6 +25,8 @@ namespace {
 // Off a contact the robot backs over floor known free within this fraction
 // of its radius (see BackOffContact).
 constexpr double kBackOffWidthRadii = 0.5;
+// Slack on the shortest back-off (a radius), for rounding in its steps.
+constexpr double kBackOffSlackM = 1e-9;
 // Fewer unknown cells than this near the last stop are its own footprint's
 // rim and specks: not worth a trip (StepAwayToSeeNearby).
 constexpr std::size_t kMinNearbyUnknown = 4;
@@ -46,8 +49,7 @@ constexpr int kReturnHomeAttempts = 5;
 
 }  // namespace
 
-bool Explorer::BackUpOverKnownFree(double half_width_m) {
-  const double back = look_.options().near_m;
+bool Explorer::BackUpOverKnownFree(double half_width_m, double back) {
   const core::Pose2 pose = Pose();
   if (!mapping::CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
                                   pose.translation() - back * pose.Direction(), half_width_m)) {
@@ -59,11 +61,21 @@ bool Explorer::BackUpOverKnownFree(double half_width_m) {
 }
 
 void Explorer::BackUpToSee() {
-  if (BackUpOverKnownFree(radius_m_)) Look();
+  if (BackUpOverKnownFree(radius_m_, look_.options().near_m)) Look();
 }
 
 void Explorer::BackOffContact() {
-  if (BackUpOverKnownFree(kBackOffWidthRadii * radius_m_)) ++result_.contact_backoffs;
+  // As far as the known-free floor behind allows, from the near range down
+  // to a radius: clear of what it touches, the robot can turn away, and in a
+  // corridor's bend a wall less than the near range behind it would refuse
+  // every back-off (maze 103: its disc on a wall's end, 40 moves in a row
+  // stopped at once, `stuck`).
+  for (double back = look_.options().near_m; back > radius_m_ - kBackOffSlackM; back -= cell_m_) {
+    if (BackUpOverKnownFree(kBackOffWidthRadii * radius_m_, back)) {
+      ++result_.contact_backoffs;
+      return;
+    }
+  }
 }
 
 Explorer::WorldCell Explorer::KeyOf(const Eigen::Vector2d& centre) const {
@@ -176,7 +188,13 @@ bool Explorer::ReturnHome() {
   for (int attempt = 0; attempt < kReturnHomeAttempts; ++attempt) {
     explore::PlannerOptions planner_options;
     planner_options.robot_radius_m = radius_m_;
-    explore::CoarseGrid grid = explore::PlanningGrid(mapper_.grid().ToTrinary(), planner_options);
+    // The robot stands where it stands and stood at its start: nothing under
+    // its disc in either place is in the way, whatever the map says (a wall
+    // mapped a cell thick beside it, as for exploring's plans).
+    mapping::TrinaryMap map = mapper_.grid().ToTrinary();
+    explore::ClearFootprint(map, Pose().translation(), radius_m_);
+    explore::ClearFootprint(map, start_pose_.translation(), radius_m_);
+    explore::CoarseGrid grid = explore::PlanningGrid(map, planner_options);
     const std::optional<core::CellIndex> home = grid.geometry().CellAt(start_pose_.translation());
     const std::optional<core::CellIndex> here = grid.geometry().CellAt(Pose().translation());
     if (!home || !here) return false;
