@@ -185,10 +185,11 @@ class Explorer {
 
   // --- Recovery (explorer_recovery.cc).
 
-  // Backs straight up by `back` metres where the map knows the floor behind
-  // is free within `half_width_m` of the path (counted in backups); returns
-  // whether it did.
-  bool BackUpOverKnownFree(double half_width_m, double back);
+  // Backs straight up by the longest distance from `longest_m` down to
+  // `shortest_m`, in steps of a cell, over which the map knows the floor
+  // behind is free within `half_width_m` of the path (counted in backups);
+  // returns whether it did.
+  bool BackUpOverKnownFree(double half_width_m, double longest_m, double shortest_m);
 
   // The paper's unfinished active vision: an obstacle's base hides in the
   // blind area under the camera, so back up, where the map knows the floor

@@ -25,7 +25,7 @@ namespace {
 // Off a contact the robot backs over floor known free within this fraction
 // of its radius (see BackOffContact).
 constexpr double kBackOffWidthRadii = 0.5;
-// Slack on the shortest back-off (a radius), for rounding in its steps.
+// Slack on the shortest back-off tried, for rounding in its steps.
 constexpr double kBackOffSlackM = 1e-9;
 // Fewer unknown cells than this near the last stop are its own footprint's
 // rim and specks: not worth a trip (StepAwayToSeeNearby).
@@ -49,19 +49,23 @@ constexpr int kReturnHomeAttempts = 5;
 
 }  // namespace
 
-bool Explorer::BackUpOverKnownFree(double half_width_m, double back) {
+bool Explorer::BackUpOverKnownFree(double half_width_m, double longest_m, double shortest_m) {
   const core::Pose2 pose = Pose();
-  if (!mapping::CorridorKnownFree(mapper_.grid().ToTrinary(), pose.translation(),
-                                  pose.translation() - back * pose.Direction(), half_width_m)) {
-    return false;
+  const mapping::TrinaryMap known = mapper_.grid().ToTrinary();  // once for every length tried
+  for (double back = longest_m; back > shortest_m - kBackOffSlackM; back -= cell_m_) {
+    if (mapping::CorridorKnownFree(known, pose.translation(),
+                                   pose.translation() - back * pose.Direction(), half_width_m)) {
+      ++result_.backups;
+      Drive(-back);
+      return true;
+    }
   }
-  ++result_.backups;
-  Drive(-back);
-  return true;
+  return false;
 }
 
 void Explorer::BackUpToSee() {
-  if (BackUpOverKnownFree(radius_m_, look_.options().near_m)) Look();
+  const double near = look_.options().near_m;
+  if (BackUpOverKnownFree(radius_m_, near, near)) Look();
 }
 
 void Explorer::BackOffContact() {
@@ -70,11 +74,8 @@ void Explorer::BackOffContact() {
   // corridor's bend a wall less than the near range behind it would refuse
   // every back-off (maze 103: its disc on a wall's end, 40 moves in a row
   // stopped at once, `stuck`).
-  for (double back = look_.options().near_m; back > radius_m_ - kBackOffSlackM; back -= cell_m_) {
-    if (BackUpOverKnownFree(kBackOffWidthRadii * radius_m_, back)) {
-      ++result_.contact_backoffs;
-      return;
-    }
+  if (BackUpOverKnownFree(kBackOffWidthRadii * radius_m_, look_.options().near_m, radius_m_)) {
+    ++result_.contact_backoffs;
   }
 }
 
