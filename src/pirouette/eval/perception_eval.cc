@@ -115,6 +115,14 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
         const core::ObstacleProfile truth =
             caster.TrueProfile(frame.world_T_robot, result.max_range_m);
         result.comparison.Add(truth, measured);
+        for (const core::RangeReading& r : measured.readings) {
+          if (r.kind != core::ReadingKind::kHit) continue;
+          ++result.measured_hits;
+          const Eigen::Vector2d p_world =
+              frame.world_T_robot * Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad),
+                                                    r.range_m * std::sin(r.bearing_rad));
+          if (world.Clearance(p_world) > request.cell_m) ++result.measured_hits_off_obstacles;
+        }
         for (const core::RangeReading& r : truth.readings) {
           if (r.kind != core::ReadingKind::kHit) continue;
           ++result.true_hits;

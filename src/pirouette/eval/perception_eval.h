@@ -46,6 +46,12 @@ struct WorldPerception {
   // floor behind the obstacle.
   long true_hits = 0;
   long silhouette_hits = 0;
+  // The measured hits, and those of them whose floor point lies farther than
+  // a map cell (the request's cell_m) from every obstacle: obstacles seen on
+  // open floor, which the map draws a cell or more off (with true masks,
+  // mostly the silhouettes above).
+  long measured_hits = 0;
+  long measured_hits_off_obstacles = 0;
   ProfileComparison comparison;
 };
 

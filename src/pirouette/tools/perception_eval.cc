@@ -69,6 +69,8 @@ std::string PerceptionEvalJson(const eval::PerceptionEvalRequest& request,
     world["seconds_per_frame"] = RoundTo(w.seconds_per_frame, 4);
     world["true_hits"] = w.true_hits;
     world["true_hits_at_silhouettes"] = w.silhouette_hits;
+    world["measured_hits"] = w.measured_hits;
+    world["measured_hits_off_obstacles"] = w.measured_hits_off_obstacles;
     AddComparison(w.comparison, world);
     per_world.push_back(std::move(world));
     all.Add(w.comparison);

@@ -19,6 +19,8 @@ eval::WorldPerception OneWorld() {
   w.seconds_per_frame = 0.0123456;
   w.true_hits = 5;
   w.silhouette_hits = 1;
+  w.measured_hits = 4;
+  w.measured_hits_off_obstacles = 1;
   w.comparison.confusion[0] = {3, 1, 0};  // truth hit: measured hit, clear, blind
   w.comparison.confusion[1] = {0, 4, 0};
   w.comparison.confusion[2] = {0, 0, 2};
@@ -44,6 +46,8 @@ TEST(PerceptionEvalJsonTest, IsOneObjectWithTheFiguresRounded) {
   EXPECT_EQ(w.at("max_range_m"), 0.4123);
   EXPECT_EQ(w.at("seconds_per_frame"), 0.0123);
   EXPECT_EQ(w.at("true_hits_at_silhouettes"), 1);
+  EXPECT_EQ(w.at("measured_hits"), 4);
+  EXPECT_EQ(w.at("measured_hits_off_obstacles"), 1);
   EXPECT_EQ(w.at("columns"), 10);
   const nlohmann::ordered_json& error = w.at("range_error_m");
   EXPECT_EQ(error.at("compared"), 3);
@@ -53,13 +57,14 @@ TEST(PerceptionEvalJsonTest, IsOneObjectWithTheFiguresRounded) {
   EXPECT_EQ(w.at("wrong_class_rate"), 0.1);
   EXPECT_EQ(w.at("confusion_truth_to_measured").at("hit").at("clear"), 1);
   EXPECT_EQ(w.at("confusion_truth_to_measured").at("blind").at("blind"), 2);
-  // The keys in the order the report has always given them.
+  // The keys in the report's order.
   std::vector<std::string> keys;
   for (const auto& item : w.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{"world", "name", "camera", "max_range_m", "frames",
-                                            "seconds_per_frame", "true_hits",
-                                            "true_hits_at_silhouettes", "columns", "range_error_m",
-                                            "wrong_class_rate", "confusion_truth_to_measured"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{
+                      "world", "name", "camera", "max_range_m", "frames", "seconds_per_frame",
+                      "true_hits", "true_hits_at_silhouettes", "measured_hits",
+                      "measured_hits_off_obstacles", "columns", "range_error_m", "wrong_class_rate",
+                      "confusion_truth_to_measured"}));
   // Over all worlds.
   EXPECT_EQ(json.at("all").at("frames"), 24);
   EXPECT_EQ(json.at("all").at("columns"), 20);
