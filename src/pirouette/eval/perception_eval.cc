@@ -23,6 +23,20 @@ namespace {
 // the floor at an obstacle's silhouette, not at its base.
 constexpr double kSilhouetteGap = 0.001;
 
+// Adds a profile's hits to `hits`, and to `off` those whose floor point lies
+// farther than gap_m from every obstacle of the world.
+void CountHits(const core::ObstacleProfile& profile, const core::Pose2& world_T_robot,
+               const sim::World& world, double gap_m, long& hits, long& off) {
+  for (const core::RangeReading& r : profile.readings) {
+    if (r.kind != core::ReadingKind::kHit) continue;
+    ++hits;
+    const Eigen::Vector2d p_world =
+        world_T_robot *
+        Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad), r.range_m * std::sin(r.bearing_rad));
+    if (world.Clearance(p_world) > gap_m) ++off;
+  }
+}
+
 // A pose where the robot's disc fits, uniformly over the floor and headings.
 core::Pose2 RandomPose(const sim::World& world, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> x(0.0, world.floor().size.x());
@@ -115,22 +129,10 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
         const core::ObstacleProfile truth =
             caster.TrueProfile(frame.world_T_robot, result.max_range_m);
         result.comparison.Add(truth, measured);
-        for (const core::RangeReading& r : measured.readings) {
-          if (r.kind != core::ReadingKind::kHit) continue;
-          ++result.measured_hits;
-          const Eigen::Vector2d p_world =
-              frame.world_T_robot * Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad),
-                                                    r.range_m * std::sin(r.bearing_rad));
-          if (world.Clearance(p_world) > request.cell_m) ++result.measured_hits_off_obstacles;
-        }
-        for (const core::RangeReading& r : truth.readings) {
-          if (r.kind != core::ReadingKind::kHit) continue;
-          ++result.true_hits;
-          const Eigen::Vector2d p_world =
-              frame.world_T_robot * Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad),
-                                                    r.range_m * std::sin(r.bearing_rad));
-          if (world.Clearance(p_world) > kSilhouetteGap) ++result.silhouette_hits;
-        }
+        CountHits(measured, frame.world_T_robot, world, request.cell_m, result.measured_hits,
+                  result.measured_hits_off_obstacles);
+        CountHits(truth, frame.world_T_robot, world, kSilhouetteGap, result.true_hits,
+                  result.silhouette_hits);
         ++result.frames;
       }
     }
