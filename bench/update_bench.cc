@@ -83,7 +83,7 @@ const std::vector<Frame>& Frames() {
       const double y = 0.5 + stop_y + uniform(-0.2, 0.2);
       const double start = uniform(0.0, 30.0);
       for (int view = 0; view < 12; ++view) {
-        Frame frame{Pose2(x, y, DegToRad(start + 30.0 * view)), ObstacleProfile{{}, kMaxRange}};
+        Frame frame{Pose2(x, y, DegToRad(start + 30.0 * view)), ObstacleProfile{{}, kMaxRange, {}}};
         // Runs of 20 to 80 columns, each a wall seen at an angle (a range
         // that changes linearly), clear floor, or a blind patch.
         int column = 0;

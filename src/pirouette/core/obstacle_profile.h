@@ -24,9 +24,16 @@ struct RangeReading {
 
 // The obstacle profile of one frame: one reading per image column, left to
 // right (so bearings decrease), and the maximum range they were read with.
+// `feet` are hits besides the columns' readings, in no order: the bases of
+// obstacles that columns met above their base, each read kClear at its
+// edge (vision::ExtractProfile). A column that crosses the slanted image of
+// an obstacle's vertical side sees the floor up to where the side ends it,
+// but the obstacle stands at the foot of that side (Taylor, Geva & Boles
+// 2005, §5.2); the foot is what the column's reading would otherwise lose.
 struct ObstacleProfile {
   std::vector<RangeReading> readings;
   double max_range_m = 0.0;
+  std::vector<RangeReading> feet;  // all kHit, within max_range_m
 };
 
 // How a profile's readings read: counts of each kind and the nearest hit.

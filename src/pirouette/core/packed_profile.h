@@ -17,32 +17,40 @@ namespace pirouette::core {
 class PackedProfile {
  public:
   PackedProfile() = default;
-  explicit PackedProfile(const ObstacleProfile& profile) : max_range_m_(profile.max_range_m) {
-    const std::size_t n = profile.readings.size();
+  // The columns' readings first, then the feet.
+  explicit PackedProfile(const ObstacleProfile& profile)
+      : max_range_m_(profile.max_range_m), columns_(profile.readings.size()) {
+    const std::size_t n = profile.readings.size() + profile.feet.size();
     bearing_rad_.reserve(n);
     range_m_.reserve(n);
     kind_.reserve(n);
-    for (const RangeReading& r : profile.readings) {
-      bearing_rad_.push_back(static_cast<float>(r.bearing_rad));
-      range_m_.push_back(static_cast<float>(r.range_m));
-      kind_.push_back(static_cast<std::uint8_t>(r.kind));
+    for (const auto* readings : {&profile.readings, &profile.feet}) {
+      for (const RangeReading& r : *readings) {
+        bearing_rad_.push_back(static_cast<float>(r.bearing_rad));
+        range_m_.push_back(static_cast<float>(r.range_m));
+        kind_.push_back(static_cast<std::uint8_t>(r.kind));
+      }
     }
   }
 
+  // Readings, the feet included.
   std::size_t size() const { return kind_.size(); }
 
   ObstacleProfile Unpack() const {
     ObstacleProfile profile;
     profile.max_range_m = max_range_m_;
-    profile.readings.resize(kind_.size());
+    profile.readings.resize(columns_);
+    profile.feet.resize(kind_.size() - columns_);
     for (std::size_t i = 0; i < kind_.size(); ++i) {
-      profile.readings[i] = {bearing_rad_[i], range_m_[i], static_cast<ReadingKind>(kind_[i])};
+      RangeReading& r = i < columns_ ? profile.readings[i] : profile.feet[i - columns_];
+      r = {bearing_rad_[i], range_m_[i], static_cast<ReadingKind>(kind_[i])};
     }
     return profile;
   }
 
  private:
   double max_range_m_ = 0.0;
+  std::size_t columns_ = 0;
   std::vector<float> bearing_rad_;
   std::vector<float> range_m_;
   std::vector<std::uint8_t> kind_;

@@ -24,5 +24,21 @@ TEST(PackedProfileTest, UnpacksToTheProfileWithinFloatRounding) {
   EXPECT_EQ(PackedProfile().Unpack().readings.size(), 0U);
 }
 
+TEST(PackedProfileTest, KeepsTheFeetApartFromTheColumns) {
+  ObstacleProfile profile;
+  profile.max_range_m = 1.0;
+  profile.readings = {{0.1, 0.6, ReadingKind::kClear}, {0.0, 0.5, ReadingKind::kHit}};
+  profile.feet = {{0.12, 0.45, ReadingKind::kHit}};
+  const PackedProfile packed(profile);
+  EXPECT_EQ(packed.size(), 3U);
+  const ObstacleProfile back = packed.Unpack();
+  ASSERT_EQ(back.readings.size(), 2U);
+  ASSERT_EQ(back.feet.size(), 1U);
+  EXPECT_NEAR(back.feet[0].bearing_rad, 0.12, 1e-7);
+  EXPECT_NEAR(back.feet[0].range_m, 0.45, 1e-7);
+  EXPECT_EQ(back.feet[0].kind, ReadingKind::kHit);
+  EXPECT_EQ(back.readings[1].kind, ReadingKind::kHit);
+}
+
 }  // namespace
 }  // namespace pirouette::core

@@ -15,6 +15,7 @@
 #include "pirouette/sim/renderer.h"
 #include "pirouette/sim/simulated_pirouette.h"
 #include "pirouette/vision/profile_extractor.h"
+#include "pirouette/vision/vertical_direction_field.h"
 
 namespace pirouette::eval {
 namespace {
@@ -23,17 +24,19 @@ namespace {
 // the floor at an obstacle's silhouette, not at its base.
 constexpr double kSilhouetteGap = 0.001;
 
-// Adds a profile's hits to `hits`, and to `off` those whose floor point lies
+// Adds a profile's hits (its feet among them) to `hits`, and to `off` those whose floor point lies
 // farther than gap_m from every obstacle of the world.
 void CountHits(const core::ObstacleProfile& profile, const core::Pose2& world_T_robot,
                const sim::World& world, double gap_m, long& hits, long& off) {
-  for (const core::RangeReading& r : profile.readings) {
-    if (r.kind != core::ReadingKind::kHit) continue;
-    ++hits;
-    const Eigen::Vector2d p_world =
-        world_T_robot *
-        Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad), r.range_m * std::sin(r.bearing_rad));
-    if (world.Clearance(p_world) > gap_m) ++off;
+  for (const auto* readings : {&profile.readings, &profile.feet}) {
+    for (const core::RangeReading& r : *readings) {
+      if (r.kind != core::ReadingKind::kHit) continue;
+      ++hits;
+      const Eigen::Vector2d p_world =
+          world_T_robot *
+          Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad), r.range_m * std::sin(r.bearing_rad));
+      if (world.Clearance(p_world) > gap_m) ++off;
+    }
   }
 }
 
@@ -108,6 +111,7 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
     sim::Renderer renderer(world, camera, options);
     const sim::RayCaster caster(world, camera);
     const camera::InversePerspectiveMap ipm(camera);
+    const vision::VerticalDirectionField vertical(camera);
     FloorMasker masker(request.method, world, camera);
     std::mt19937_64 rng(request.seed);
     double seconds = 0.0;
@@ -124,7 +128,7 @@ std::vector<WorldPerception> EvaluatePerception(const PerceptionEvalRequest& req
         const auto start = std::chrono::steady_clock::now();
         const cv::Mat1b mask = masker.Mask(io::ToBgrMat(frame.frame.image), frame.world_T_robot);
         const core::ObstacleProfile measured =
-            vision::ExtractProfile(mask, ipm, result.max_range_m, masker.Unresolved());
+            vision::ExtractProfile(mask, ipm, result.max_range_m, masker.Unresolved(), &vertical);
         seconds += since(start);
         const core::ObstacleProfile truth =
             caster.TrueProfile(frame.world_T_robot, result.max_range_m);

@@ -43,13 +43,15 @@ struct WorldPerception {
   // The true hits, and those of them that end the floor at an obstacle's
   // silhouette (a column crossing the slanted image of a vertical edge, the
   // paper's §5.2) rather than at its base: their floor point lies in free
-  // floor behind the obstacle.
+  // floor behind the obstacle. The truth reads a column that meets such an
+  // edge 3 rows or more above its foot as clear (sim::RayCaster::
+  // TrueProfile), so those left met it nearer its foot.
   long true_hits = 0;
   long silhouette_hits = 0;
-  // The measured hits, and those of them whose floor point lies farther than
-  // a map cell (the request's cell_m) from every obstacle: obstacles seen on
-  // open floor, which the map draws a cell or more off (with true masks,
-  // mostly the silhouettes above).
+  // The measured hits (the profiles' feet among them), and those of them
+  // whose floor point lies farther than a map cell (the request's cell_m)
+  // from every obstacle: obstacles seen on open floor, which the map draws a
+  // cell or more off.
   long measured_hits = 0;
   long measured_hits_off_obstacles = 0;
   ProfileComparison comparison;

@@ -14,6 +14,7 @@
 #include "pirouette/sim/simulated_pirouette.h"
 #include "pirouette/vision/column_colour.h"
 #include "pirouette/vision/profile_extractor.h"
+#include "pirouette/vision/vertical_direction_field.h"
 
 namespace pirouette::eval {
 namespace {
@@ -37,7 +38,7 @@ struct PlaceObserver::Impl {
                    return options;
                  }()),
         ipm(world.robot().camera),
-        extractor(ipm, max_range_m),
+        extractor(ipm, max_range_m, vision::VerticalDirectionField(world.robot().camera)),
         masker(method, world, world.robot().camera) {}
 
   const sim::World& world;

@@ -16,6 +16,14 @@ LookAhead::Finding LookAhead::Blocking(const core::ObstacleProfile& profile,
   const double r = SweptHalfWidth();
   const Eigen::Vector2d end(distance_m, 0.0);
   Finding finding;
+  // The base of an obstacle inside the swept corridor.
+  const auto add_hit = [&](const core::RangeReading& hit) {
+    const Eigen::Vector2d p(hit.range_m * std::cos(hit.bearing_rad),
+                            hit.range_m * std::sin(hit.bearing_rad));
+    if (p.x() > 0.0 && core::DistanceToSegment(p, Eigen::Vector2d::Zero(), end) < r) {
+      finding.hits_robot.push_back(p);
+    }
+  };
   bool blind = false;
   // A clear reading this much short of the max range is seen only to there.
   constexpr double kShortM = 1e-6;
@@ -29,17 +37,13 @@ LookAhead::Finding LookAhead::Blocking(const core::ObstacleProfile& profile,
       }
       continue;
     }
-    if (x <= 0.0) continue;
     if (reading.kind == core::ReadingKind::kHit) {
-      // The base of an obstacle inside the swept corridor.
-      const Eigen::Vector2d p(x, y);
-      if (core::DistanceToSegment(p, Eigen::Vector2d::Zero(), end) < r) {
-        finding.hits_robot.push_back(p);
-      }
-    } else if (std::abs(y) < options_.radius_m) {
+      add_hit(reading);
+    } else if (x > 0.0 && std::abs(y) < options_.radius_m) {
       blind = true;
     }
   }
+  for (const core::RangeReading& foot : profile.feet) add_hit(foot);
   if (!finding.hits_robot.empty()) {
     finding.verdict = LookVerdict::kBlocked;
   } else if (blind) {

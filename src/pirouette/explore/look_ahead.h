@@ -46,7 +46,8 @@ class LookAhead {
 
   struct Finding {
     LookVerdict verdict = LookVerdict::kClear;
-    // For kBlocked: the hits inside the swept corridor, robot frame.
+    // For kBlocked: the hits inside the swept corridor (the profile's feet
+    // among them), robot frame.
     std::vector<Eigen::Vector2d> hits_robot;
     // How far forward the frame vouches for the move: where a kClear reading
     // short of the max range (the floor seen free to there, unresolved past

@@ -255,6 +255,17 @@ FrameRays RaysOf(const std::vector<core::RangeReading>& readings, const core::Po
   return rays;
 }
 
+// Adds the profile's feet to rays.miss: hit rays, with no fill between them.
+void AddFeet(const std::vector<core::RangeReading>& feet, const core::Pose2& world_T_robot,
+             FrameRays& rays) {
+  const Eigen::Vector2d& origin = world_T_robot.translation();
+  for (const core::RangeReading& f : feet) {
+    const double angle = world_T_robot.heading() + f.bearing_rad;
+    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+    rays.miss.push_back(Ray{direction, origin + f.range_m * direction, f.range_m, true, false});
+  }
+}
+
 // Grows the grid to hold the robot and every ray's end.
 void GrowToHold(OccupancyGrid& grid, const Eigen::Vector2d& origin, const FrameRays& rays) {
   Eigen::Vector2d lo = origin;
@@ -408,7 +419,9 @@ std::size_t ApplyHits(OccupancyGrid& grid, const std::vector<Ray>& rays) {
 std::size_t InsertProfile(OccupancyGrid& grid, const core::ObstacleProfile& profile,
                           const core::Pose2& world_T_robot) {
   for (const auto& reading : profile.readings) CheckReading(reading);
+  for (const auto& foot : profile.feet) CheckReading(foot);
   FrameRays rays = RaysOf(profile.readings, world_T_robot, grid.geometry().resolution());
+  AddFeet(profile.feet, world_T_robot, rays);
   GrowToHold(grid, world_T_robot.translation(), rays);
   grid.BeginFrame(world_T_robot.translation());
   const core::GridGeometry& geometry = grid.geometry();

@@ -45,6 +45,7 @@ inline constexpr double kMaxFillGapRad = core::DegToRad(5.0);
 // apart but their rays part by more than a cell at the shorter range, extra
 // miss rays at bearings between them fill the gap out to that range, so the
 // swept area has no unknown holes for an explorer to chase.
+// The profile's feet are hit readings as above, with no fill to any other.
 // Returns the number of cell updates applied. Throws std::invalid_argument
 // when a reading's bearing or range is not finite or a range is negative, and
 // std::length_error when the frame would grow the grid past

@@ -30,7 +30,7 @@ constexpr double kCell = 0.01;
 OccupancyGrid MetreGrid() { return OccupancyGrid(GridGeometry(kCell, {-0.5, -0.5}, 100, 100)); }
 
 ObstacleProfile Profile(std::initializer_list<core::RangeReading> readings) {
-  return {readings, 0.4};
+  return {readings, 0.4, {}};
 }
 
 // The grid cell of a world point, which must be on the grid.
@@ -160,6 +160,24 @@ TEST(InsertProfile, HitWinsOverMissInTheSameFrame) {
   }
 }
 
+TEST(InsertProfile, AFootIsAHitThatWinsOverTheColumnsMisses) {
+  // A column clear to 0.3 m (the floor seen to a side's edge) and the foot of
+  // that side at 0.1 m on a bearing of its own: the foot's cell is occupied,
+  // the cells before it free, and the column free on past it.
+  OccupancyGrid grid = MetreGrid();
+  ObstacleProfile profile = Profile({{0.0, 0.3, ReadingKind::kClear}});
+  profile.feet = {{0.0, 0.1, ReadingKind::kHit}, {DegToRad(-90.0), 0.2, ReadingKind::kHit}};
+  InsertProfile(grid, profile, kFacingNorth);
+  EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.105)), 0.7, 1e-6);
+  EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.095)), 0.4, 1e-6);
+  EXPECT_NEAR(grid.Probability(At(grid, 0.005, 0.205)), 0.4, 1e-6);
+  // The second foot, to the right (east): a hit with its own free ray.
+  EXPECT_NEAR(grid.Probability(At(grid, 0.205, 0.005)), 0.7, 1e-6);
+  EXPECT_NEAR(grid.Probability(At(grid, 0.105, 0.005)), 0.4, 1e-6);
+  // No fill between a foot and the column: the wedge between them is unknown.
+  EXPECT_FALSE(grid.Known(At(grid, 0.105, 0.105)));
+}
+
 TEST(InsertProfile, HitWinsOverBlindAndBlindOverMiss) {
   OccupancyGrid grid = MetreGrid();
   InsertProfile(grid,
@@ -176,7 +194,7 @@ TEST(InsertProfile, HitWinsOverBlindAndBlindOverMiss) {
 
 TEST(InsertProfile, ACellCrossedByManyRaysChangesOnce) {
   OccupancyGrid grid = MetreGrid();
-  ObstacleProfile profile{{}, 0.4};
+  ObstacleProfile profile{{}, 0.4, {}};
   for (int i = 0; i < 100; ++i) {
     profile.readings.push_back({DegToRad(-5.0 + 0.1 * i), 0.3, ReadingKind::kClear});
   }
@@ -217,7 +235,7 @@ TEST(InsertProfile, FullCircleLeavesNoHoles) {
   // The paper's column spacing (~0.19°) at 0.4 m, from an off-centre pose.
   OccupancyGrid grid = MetreGrid();
   const Pose2 pose(0.0137, -0.0291, 0.3);
-  ObstacleProfile profile{{}, 0.4};
+  ObstacleProfile profile{{}, 0.4, {}};
   for (int i = 0; i < 1920; ++i) {
     profile.readings.push_back({DegToRad(180.0 - 0.1875 * i), 0.4, ReadingKind::kClear});
   }
@@ -231,7 +249,7 @@ TEST(InsertProfile, SparseReadingsAreFilledBetween) {
   OccupancyGrid grid(GridGeometry(kCell, {-1.5, -1.5}, 300, 300));
   const Pose2 pose(0.003, 0.008, 0.0);
   const auto range = [](double bearing) { return 0.9 + 0.1 * std::sin(3.0 * bearing); };
-  ObstacleProfile profile{{}, 1.2};
+  ObstacleProfile profile{{}, 1.2, {}};
   for (int i = 0; i <= 180; ++i) {  // the last closes the circle
     const double bearing = DegToRad(-2.0 * i);
     profile.readings.push_back({bearing, range(bearing), ReadingKind::kHit});
@@ -241,7 +259,7 @@ TEST(InsertProfile, SparseReadingsAreFilledBetween) {
   EXPECT_GT(cells, 19000);
   // Without the fill (readings farther apart than kMaxFillGapRad) there are holes.
   OccupancyGrid sparse(GridGeometry(kCell, {-1.5, -1.5}, 300, 300));
-  ObstacleProfile sparse_profile{{}, 1.2};
+  ObstacleProfile sparse_profile{{}, 1.2, {}};
   for (int i = 0; i < 60; ++i) {
     sparse_profile.readings.push_back({DegToRad(-6.0 * i), 0.9, ReadingKind::kClear});
   }
@@ -429,7 +447,7 @@ std::vector<double> IdealFrame(const GridGeometry& g, const ObstacleProfile& pro
 // patches, drawn by uniform(lo, hi).
 template <class Uniform>
 ObstacleProfile RandomFrame(Uniform& uniform, int columns, double field_deg, double max_range) {
-  ObstacleProfile profile{{}, max_range};
+  ObstacleProfile profile{{}, max_range, {}};
   int column = 0;
   while (column < columns) {
     const int run = 5 + static_cast<int>(uniform(0.0, 60.0));

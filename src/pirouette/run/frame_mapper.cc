@@ -13,6 +13,7 @@
 #include "pirouette/mapping/range_sensor_model.h"
 #include "pirouette/run/stage_timer.h"
 #include "pirouette/vision/column_colour.h"
+#include "pirouette/vision/vertical_direction_field.h"
 
 namespace pirouette::run {
 namespace {
@@ -47,17 +48,19 @@ FrameMapper::FrameMapper(const MapperSetup& setup, FrameMasks masks, const core:
       unresolved_(std::move(masks.unresolved)),
       settling_left_(std::max(0, masks.settling_frames)),
       ipm_(setup.camera),
-      extractor_(ipm_, setup.max_range_m),
+      extractor_(ipm_, setup.max_range_m, vision::VerticalDirectionField(setup.camera)),
       look_(explore::LookAheadOptions{setup.radius_m, camera::NearRange(ipm_), setup.max_range_m,
                                       setup.cell_m}),
       start_(start),
       grid_(InitialGrid(start, setup)) {
   if (setup.graph) {
     graph_.emplace(*setup.graph);
-    view_extractor_.emplace(ipm_, setup.max_range_m * setup.graph->stop.view_range_factor);
+    view_extractor_.emplace(ipm_, setup.max_range_m * setup.graph->stop.view_range_factor,
+                            extractor_.vertical());
   } else if (setup.tracking) {
     tracker_.emplace(*setup.tracking);
-    view_extractor_.emplace(ipm_, setup.max_range_m * setup.tracking->view_range_factor);
+    view_extractor_.emplace(ipm_, setup.max_range_m * setup.tracking->view_range_factor,
+                            extractor_.vertical());
   }
 }
 

@@ -13,6 +13,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Bisections of a pixel step at a floor's edge: 2^-10 pixel.
 constexpr int kEdgeBisections = 10;
+// A ray meeting an obstacle this many rows or more above the image of the
+// point's foot meets it above its base (TrueProfile), as
+// vision::ExtractProfile tells it by its walk down the vertical.
+constexpr double kAboveBaseRows = 3.0;
 
 }  // namespace
 
@@ -215,6 +219,17 @@ core::ObstacleProfile RayCaster::TrueProfile(const core::Pose2& world_T_robot,
         const Eigen::Vector2d edge = floor_point(floor).value_or(last_floor);
         found = edge.norm() <= max_range_m ? reading(edge, edge.norm(), core::ReadingKind::kHit)
                                            : reading(edge, max_range_m, core::ReadingKind::kClear);
+        // Met above its base: the floor was seen to here, and what ends it
+        // does not stand here.
+        const RayHit hit = Cast(world_T_camera, {u, not_floor});
+        if (hit.kind == RayHit::Kind::kSolid) {
+          const Eigen::Vector3d foot(hit.p_world.x(), hit.p_world.y(), 0.0);
+          const std::optional<Eigen::Vector2d> foot_pixel =
+              camera_.Project(world_T_camera.inverse() * foot);
+          if (!foot_pixel || foot_pixel->y() - not_floor >= kAboveBaseRows) {
+            found = reading(edge, std::min(edge.norm(), max_range_m), core::ReadingKind::kClear);
+          }
+        }
       } else if (!p || p->norm() > max_range_m) {
         found = reading(p.value_or(last_floor), max_range_m, core::ReadingKind::kClear);
       } else {

@@ -69,7 +69,13 @@ class RayCaster {
   //   kClear when the floor reaches max_range_m before any transition (range
   //     = max_range_m, bearing of the first pixel beyond it, or of the top
   //     pixel);
-  //   kHit otherwise.
+  //   kHit otherwise;
+  // and kClear at the transition's range where the ray just above it meets
+  // an obstacle 3 rows or more above the image of that point's foot (or
+  // whose foot is out of view: a column crossing the slanted image of a
+  // vertical side, the paper's §5.2: the transition's floor point is not
+  // where the obstacle stands), as vision::ExtractProfile reads such a
+  // column with the camera's verticals.
   core::ObstacleProfile TrueProfile(const core::Pose2& world_T_robot, double max_range_m) const;
 
  private:

@@ -67,7 +67,9 @@ TEST(RayCasterTest, CastsMeetTheFloorTheSolidsAndTheGround) {
 // where the floor's edge is an obstacle's base. Beside an obstacle, a column
 // may instead cross the image of its vertical edge (which a tilted camera
 // shows slanted, the paper's §5.2): the floor ends there at a point behind
-// the obstacle, in its shadow, and the obstacle itself is nearer.
+// the obstacle, in its shadow, and the obstacle itself is nearer. Such a
+// column reads clear to there when it meets the edge 3 rows or more above
+// its foot; nearer the foot it stays a hit a little behind the obstacle.
 TEST(RayCasterTest, TrueProfileAgreesWithWorldRayCast) {
   const camera::CameraModel camera = CentredPaperCamera();
   const World world = MakeWorld({1.0, 1.0}, BoundaryWalls{0.1, 0.02, {235, 235, 235}},
@@ -77,6 +79,7 @@ TEST(RayCasterTest, TrueProfileAgreesWithWorldRayCast) {
   const RayCaster caster(world, camera);
   int hits = 0;
   int shadows = 0;
+  int sides = 0;
   for (const double heading_deg : {0.0, 20.0, -35.0, 90.0, 180.0}) {
     const core::Pose2 world_T_robot(0.35, 0.5, core::DegToRad(heading_deg));
     const core::ObstacleProfile profile = caster.TrueProfile(world_T_robot, 0.7);
@@ -98,16 +101,22 @@ TEST(RayCasterTest, TrueProfileAgreesWithWorldRayCast) {
           ++shadows;
         }
       } else {
+        // Clear to the max range, or short of it where the column met an
+        // obstacle above its base: the floor is free to there.
         EXPECT_EQ(r.kind, core::ReadingKind::kClear);
-        EXPECT_EQ(r.range_m, 0.7);
-        EXPECT_FALSE(truth && *truth < 0.7 - 1e-3) << heading_deg << " " << u;
+        EXPECT_LE(r.range_m, 0.7);
+        if (r.range_m < 0.7) ++sides;
+        EXPECT_FALSE(truth && *truth < r.range_m - 1e-3) << heading_deg << " " << u;
       }
     }
     // The centre column looks straight ahead.
     EXPECT_NEAR(profile.readings[160].bearing_rad, 0.0, 1e-9);
   }
   EXPECT_GT(hits, 500);
-  EXPECT_LT(shadows, hits / 20);
+  // The box's and the cylinder's sides: columns that meet them above their
+  // base read clear, so hits off the obstacles (silhouettes) are rare.
+  EXPECT_GT(sides, 0);
+  EXPECT_LT(shadows, hits / 100);
 }
 
 TEST(RayCasterTest, OpenFloorIsClearAndAnObstacleAtTheFeetIsBlind) {

@@ -25,6 +25,7 @@
 #include "pirouette/run/stage_timer.h"
 #include "pirouette/tools/json_output.h"
 #include "pirouette/vision/profile_extractor.h"
+#include "pirouette/vision/vertical_direction_field.h"
 
 namespace pirouette::tools {
 namespace {
@@ -79,7 +80,8 @@ CaptureCamera LoadCaptureCamera(const LiveCaptureRequest& request) {
   loaded.camera = io::LoadCameraFile(request.camera_path);
   const double max_range =
       request.max_range_m.value_or(camera::MaxRange(*loaded.camera, mapping::kSmallRobotCellM));
-  loaded.extractor.emplace(camera::InversePerspectiveMap(*loaded.camera), max_range);
+  loaded.extractor.emplace(camera::InversePerspectiveMap(*loaded.camera), max_range,
+                           vision::VerticalDirectionField(*loaded.camera));
   return loaded;
 }
 

@@ -15,6 +15,7 @@
 #include "pirouette/sim/renderer.h"
 #include "pirouette/sim/simulated_pirouette.h"
 #include "pirouette/vision/profile_extractor.h"
+#include "pirouette/vision/vertical_direction_field.h"
 
 namespace pirouette::tools {
 namespace {
@@ -40,13 +41,14 @@ RopResult MakeRop(const RopRequest& request) {
   const std::vector<sim::SimulatedFrame> frames =
       sim::SimulatePirouette(world, renderer, request.seed);
   const camera::InversePerspectiveMap ipm(camera);
+  const vision::VerticalDirectionField vertical(camera);
   eval::FloorMasker masker(request.method, world, camera);
   std::vector<mapping::HeadedProfile> views;
   for (const sim::SimulatedFrame& frame : frames) {
     const cv::Mat3b bgr = io::ToBgrMat(frame.frame.image);
     const cv::Mat1b mask = masker.Mask(bgr, frame.world_T_robot);
     views.push_back({frame.frame.odometry.heading(),
-                     vision::ExtractProfile(mask, ipm, max_range, masker.Unresolved())});
+                     vision::ExtractProfile(mask, ipm, max_range, masker.Unresolved(), &vertical)});
   }
   RopResult result;
   result.rop = mapping::MergePirouette(views);

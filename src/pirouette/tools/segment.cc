@@ -14,6 +14,7 @@
 #include "pirouette/mapping/occupancy_grid.h"
 #include "pirouette/tools/json_output.h"
 #include "pirouette/vision/profile_extractor.h"
+#include "pirouette/vision/vertical_direction_field.h"
 
 namespace pirouette::tools {
 
@@ -37,10 +38,11 @@ SegmentImageResult SegmentImage(const SegmentImageRequest& request) {
   result.floor_mask = segmenter->Segment(bgr);
   if (camera) {
     const camera::InversePerspectiveMap ipm(*camera);
+    const vision::VerticalDirectionField vertical(*camera);
     const double max_range =
         request.max_range_m.value_or(camera::MaxRange(*camera, mapping::kSmallRobotCellM));
-    result.profile =
-        vision::ExtractProfile(result.floor_mask, ipm, max_range, segmenter->Unresolved());
+    result.profile = vision::ExtractProfile(result.floor_mask, ipm, max_range,
+                                            segmenter->Unresolved(), &vertical);
   }
   if (!request.mask_path.empty()) io::WritePng(request.mask_path, result.floor_mask);
   if (!request.overlay_path.empty()) {
