@@ -188,6 +188,7 @@ std::optional<Eigen::Vector2d> RayCaster::FloorPoint(int u, double v) const {
 core::ObstacleProfile RayCaster::TrueProfile(const core::Pose2& world_T_robot,
                                              double max_range_m) const {
   const Eigen::Isometry3d world_T_camera = WorldTCamera(world_T_robot);
+  const Eigen::Isometry3d camera_T_world = world_T_camera.inverse();
   core::ObstacleProfile profile;
   profile.max_range_m = max_range_m;
   profile.readings.reserve(static_cast<std::size_t>(camera_.width()));
@@ -224,8 +225,7 @@ core::ObstacleProfile RayCaster::TrueProfile(const core::Pose2& world_T_robot,
         const RayHit hit = Cast(world_T_camera, {u, not_floor});
         if (hit.kind == RayHit::Kind::kSolid) {
           const Eigen::Vector3d foot(hit.p_world.x(), hit.p_world.y(), 0.0);
-          const std::optional<Eigen::Vector2d> foot_pixel =
-              camera_.Project(world_T_camera.inverse() * foot);
+          const std::optional<Eigen::Vector2d> foot_pixel = camera_.Project(camera_T_world * foot);
           if (!foot_pixel || foot_pixel->y() - not_floor >= kAboveBaseRows) {
             found = reading(edge, std::min(edge.norm(), max_range_m), core::ReadingKind::kClear);
           }

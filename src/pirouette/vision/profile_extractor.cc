@@ -16,14 +16,20 @@ core::RangeReading Reading(const Eigen::Vector2f& p_robot, double range_m, core:
 
 double Range(const Eigen::Vector2f& p_robot) { return static_cast<double>(p_robot.norm()); }
 
+// Whether pixel (u, v) is resolved: `unresolved` (empty: all are) does not
+// mark it.
+bool Resolved(const cv::Mat1b& unresolved, int u, int v) {
+  return unresolved.empty() || unresolved(v, u) == 0;
+}
+
 // The reading of a floor edge at `edge` (robot frame) found at pixel (u, v):
 // a hit within range, or kClear at its range where the pixel is unresolved.
 core::RangeReading EdgeReading(const Eigen::Vector2f& edge, const cv::Mat1b& unresolved, int u,
                                int v, double max_range_m) {
   const double range = Range(edge);
   if (range > max_range_m) return Reading(edge, max_range_m, core::ReadingKind::kClear);
-  const bool seen_to_here = !unresolved.empty() && unresolved(v, u) != 0;
-  return Reading(edge, range, seen_to_here ? core::ReadingKind::kClear : core::ReadingKind::kHit);
+  return Reading(edge, range,
+                 Resolved(unresolved, u, v) ? core::ReadingKind::kHit : core::ReadingKind::kClear);
 }
 
 // Where a walk down the world's vertical from pixel (u, v), not floor,
@@ -88,14 +94,15 @@ core::RangeReading ObstacleReading(const cv::Mat1b& mask, const cv::Mat1b& unres
   constexpr int kMinSideRows = 3;
   const std::optional<Eigen::Vector2f> here = ipm.At(u, v);
   const Eigen::Vector2f edge = here ? Eigen::Vector2f(0.5f * (*here + below)) : below;
-  const bool resolved = unresolved.empty() || unresolved(v, u) == 0;
-  if (vertical == nullptr || !resolved) return EdgeReading(edge, unresolved, u, v, max_range_m);
+  if (vertical == nullptr || !Resolved(unresolved, u, v)) {
+    return EdgeReading(edge, unresolved, u, v, max_range_m);
+  }
   const SideWalk walk = WalkDown(mask, *vertical, u, v);
   if (walk.rows < kMinSideRows && !walk.bottom) {
     return EdgeReading(edge, unresolved, u, v, max_range_m);
   }
   const int foot_v = v + walk.rows;
-  if (walk.floor_u >= 0 && (unresolved.empty() || unresolved(foot_v, walk.u) == 0)) {
+  if (walk.floor_u >= 0 && Resolved(unresolved, walk.u, foot_v)) {
     const std::optional<Eigen::Vector2f> side = ipm.At(walk.u, foot_v);
     const std::optional<Eigen::Vector2f> floor = ipm.At(walk.floor_u, foot_v + 1);
     if (side && floor) {
