@@ -131,7 +131,7 @@ TEST_F(CaptureCliTest, WritesAnOverlayAndAProfileLineForEveryFrame) {
     // column is blind.
     EXPECT_GT(line.at("reference_fraction").get<double>(), 0.9);
     EXPECT_EQ(line.at("blind"), 0);
-    if (line.at("hit").get<int>() > 0) {
+    if (line.at("hit").get<int>() + line.at("feet").get<int>() > 0) {
       ++frames_with_hits;
       const double nearest = line.at("nearest_hit_m").get<double>();
       EXPECT_GT(nearest, 0.05);  // beyond the robot's own radius (4 cm)

@@ -36,12 +36,14 @@ struct ObstacleProfile {
   std::vector<RangeReading> feet;  // all kHit, within max_range_m
 };
 
-// How a profile's readings read: counts of each kind and the nearest hit.
+// How a profile's readings read: counts of each kind (the columns'), its
+// feet, and the nearest hit, a column's or a foot's.
 struct ProfileCounts {
   int hit = 0;
   int clear = 0;
   int blind = 0;
-  std::optional<double> nearest_hit_m;  // nullopt: no hit
+  int feet = 0;
+  std::optional<double> nearest_hit_m;  // nullopt: no hit and no foot
 };
 
 inline ProfileCounts CountReadings(const ObstacleProfile& profile) {
@@ -60,6 +62,12 @@ inline ProfileCounts CountReadings(const ObstacleProfile& profile) {
       case ReadingKind::kBlind:
         ++counts.blind;
         break;
+    }
+  }
+  counts.feet = static_cast<int>(profile.feet.size());
+  for (const RangeReading& foot : profile.feet) {
+    if (!counts.nearest_hit_m || foot.range_m < *counts.nearest_hit_m) {
+      counts.nearest_hit_m = foot.range_m;
     }
   }
   return counts;

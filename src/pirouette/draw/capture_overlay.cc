@@ -26,6 +26,15 @@ int PutText(cv::Mat3b& image, const std::string& text, int x, int y, const cv::V
   return x + cv::getTextSize(text, cv::FONT_HERSHEY_PLAIN, kFontScale, 1, &baseline).width;
 }
 
+// The pixel where the floor point of reading `r` (robot frame) appears.
+std::optional<Eigen::Vector2d> PixelOf(const core::RangeReading& r,
+                                       const camera::CameraModel& camera,
+                                       const Eigen::Isometry3d& camera_T_robot) {
+  const Eigen::Vector3d p_robot(r.range_m * std::cos(r.bearing_rad),
+                                r.range_m * std::sin(r.bearing_rad), 0.0);
+  return camera.Project(camera_T_robot * p_robot);
+}
+
 }  // namespace
 
 std::vector<int> ReadingRows(const core::ObstacleProfile& profile,
@@ -34,9 +43,7 @@ std::vector<int> ReadingRows(const core::ObstacleProfile& profile,
   std::vector<int> rows;
   rows.reserve(profile.readings.size());
   for (const core::RangeReading& r : profile.readings) {
-    const Eigen::Vector3d p_robot(r.range_m * std::cos(r.bearing_rad),
-                                  r.range_m * std::sin(r.bearing_rad), 0.0);
-    const std::optional<Eigen::Vector2d> pixel = camera.Project(camera_T_robot * p_robot);
+    const std::optional<Eigen::Vector2d> pixel = PixelOf(r, camera, camera_T_robot);
     if (!pixel) {
       rows.push_back(-1);
       continue;
@@ -47,10 +54,27 @@ std::vector<int> ReadingRows(const core::ObstacleProfile& profile,
   return rows;
 }
 
+std::vector<cv::Point> FootPixels(const core::ObstacleProfile& profile,
+                                  const camera::CameraModel& camera) {
+  const Eigen::Isometry3d camera_T_robot = camera.robot_T_camera().inverse();
+  std::vector<cv::Point> pixels;
+  for (const core::RangeReading& foot : profile.feet) {
+    const std::optional<Eigen::Vector2d> pixel = PixelOf(foot, camera, camera_T_robot);
+    if (!pixel) continue;
+    const cv::Point p(static_cast<int>(std::lround(pixel->x())),
+                      static_cast<int>(std::lround(pixel->y())));
+    if (p.x >= 0 && p.y >= 0 && p.x < camera.width() && p.y < camera.height()) {
+      pixels.push_back(p);
+    }
+  }
+  return pixels;
+}
+
 cv::Mat3b DrawCaptureOverlay(const cv::Mat3b& bgr, const cv::Mat1b& floor_mask,
                              const CaptureCaption& caption,
                              const std::optional<core::ObstacleProfile>& profile,
-                             const std::vector<int>& reading_rows) {
+                             const std::vector<int>& reading_rows,
+                             const std::vector<cv::Point>& foot_pixels) {
   CV_Assert(!profile || (profile->readings.size() == static_cast<std::size_t>(bgr.cols) &&
                          reading_rows.size() == profile->readings.size()));
   const int scale = std::max(1, (kMinOverlayWidth + bgr.cols - 1) / bgr.cols);
@@ -71,6 +95,13 @@ cv::Mat3b DrawCaptureOverlay(const cv::Mat3b& bgr, const cv::Mat1b& floor_mask,
       // A mark two frame pixels high, centred on the reading's row.
       const int y0 = std::clamp(row * scale - scale / 2, 0, view.rows - 2 * scale);
       out(cv::Rect(u * scale, y0, scale, 2 * scale)).setTo(KindColour(r.kind));
+    }
+    // A foot: a ring two frame pixels across, round the foot's pixel.
+    const cv::Vec3b& hit = KindColour(core::ReadingKind::kHit);
+    for (const cv::Point& foot : foot_pixels) {
+      if (foot.x < 0 || foot.y < 0 || foot.x >= bgr.cols || foot.y >= bgr.rows) continue;
+      const cv::Point centre(foot.x * scale + scale / 2, foot.y * scale + scale / 2);
+      cv::circle(out, centre, 2 * scale, cv::Scalar(hit[0], hit[1], hit[2]), 1, cv::LINE_AA);
     }
     // The range strip: a bar a column, full height at the maximum range.
     const int top = view.rows;
@@ -96,6 +127,9 @@ cv::Mat3b DrawCaptureOverlay(const cv::Mat3b& bgr, const cv::Mat1b& floor_mask,
     int x = PutText(out, fmt::format("hit {}", caption.counts->hit), 2, line2, kHitColour);
     x = PutText(out, fmt::format(" clear {}", caption.counts->clear), x, line2, kClearColour);
     x = PutText(out, fmt::format(" blind {}", caption.counts->blind), x, line2, kBlindColour);
+    if (caption.counts->feet > 0) {
+      x = PutText(out, fmt::format(" feet {}", caption.counts->feet), x, line2, kHitColour);
+    }
     if (caption.counts->nearest_hit_m) {
       PutText(out, fmt::format(" near {:.2f} m", *caption.counts->nearest_hit_m), x, line2,
               kTextColour);

@@ -148,12 +148,14 @@ CaptureFrame CaptureOne(const cv::Mat3b& bgr, int index, vision::FloorSegmenter&
 
   const std::vector<int> rows =
       profile ? draw::ReadingRows(*profile, *camera.camera) : std::vector<int>();
+  const std::vector<cv::Point> feet =
+      profile ? draw::FootPixels(*profile, *camera.camera) : std::vector<cv::Point>();
   out.Prepare();
   io::WritePng(
       (fs::path(out_dir) / frame.image).string(),
       draw::DrawCaptureOverlay(
           bgr, mask, {frame.index, frame.floor_fraction, frame.reference_fraction, frame.counts},
-          profile, rows));
+          profile, rows, feet));
   return frame;
 }
 
@@ -234,6 +236,7 @@ std::string CaptureFrameJson(const CaptureFrame& frame) {
     line["hit"] = frame.counts->hit;
     line["clear"] = frame.counts->clear;
     line["blind"] = frame.counts->blind;
+    line["feet"] = frame.counts->feet;
     line["nearest_hit_m"] = frame.counts->nearest_hit_m
                                 ? nlohmann::ordered_json(RoundTo(*frame.counts->nearest_hit_m, 4))
                                 : nlohmann::ordered_json(nullptr);
@@ -262,6 +265,7 @@ std::string LiveCaptureSummaryJson(const LiveCaptureRequest& request,
   double hit = 0.0;
   double clear = 0.0;
   double blind = 0.0;
+  double feet = 0.0;
   for (const CaptureFrame& f : result.frames) {
     floor += f.floor_fraction;
     reference += f.reference_fraction;
@@ -270,6 +274,7 @@ std::string LiveCaptureSummaryJson(const LiveCaptureRequest& request,
       hit += f.counts->hit;
       clear += f.counts->clear;
       blind += f.counts->blind;
+      feet += f.counts->feet;
     }
   }
   summary["mean_floor_fraction"] = RoundTo(floor / n, 4);
@@ -279,6 +284,7 @@ std::string LiveCaptureSummaryJson(const LiveCaptureRequest& request,
     summary["mean_hit"] = RoundTo(hit / n, 1);
     summary["mean_clear"] = RoundTo(clear / n, 1);
     summary["mean_blind"] = RoundTo(blind / n, 1);
+    summary["mean_feet"] = RoundTo(feet / n, 1);
   }
   summary["seconds_per_frame"] = RoundTo(seconds / n, 5);
   summary["wall_time_s"] = RoundTo(result.wall_time_s, 3);

@@ -87,8 +87,9 @@ LiveCaptureResult RunLiveCapture(
 
 // One line of profiles.jsonl, without the newline: {"frame": …, "image": …,
 // "floor_fraction": …, "reference_fraction": …, "seconds": …} and with
-// counts "hit", "clear", "blind" (columns) and "nearest_hit_m" (null when no
-// hit).
+// counts "hit", "clear", "blind" (columns), "feet" (hits at the feet of
+// obstacles' sides, ObstacleProfile::feet) and "nearest_hit_m" (a column's
+// or a foot's; null when there is none).
 std::string CaptureFrameJson(const CaptureFrame& frame);
 
 // The capture's summary as JSON (format pirouette-capture/1): source, camera,
