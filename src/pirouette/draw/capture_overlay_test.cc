@@ -59,7 +59,7 @@ TEST(CaptureOverlayTest, AFootIsCountedAsAHitAndDrawnWhereItIsSeen) {
     int n = 0;
     for (int dy = -3; dy <= 3; ++dy) {
       for (int dx = -3; dx <= 3; ++dx) {
-        const cv::Vec3b c = image(p.y + dy, p.x + dx);
+        const cv::Vec3b& c = image(p.y + dy, p.x + dx);
         n += cv::norm(cv::Vec3d(c) - cv::Vec3d(kHitColour)) < 60.0 ? 1 : 0;
       }
     }

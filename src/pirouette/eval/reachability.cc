@@ -62,9 +62,10 @@ void RasteriseRow(const core::GridGeometry& g, const sim::World& world,
   for (int a = 0; a < window.width;) {
     const Eigen::Vector2d c(
         g.origin().x() + (static_cast<double>(window.x0 + a) + 0.5) * g.resolution(), y);
-    // A positive clearance means free; only at zero is IsOccupied needed.
+    // A clearance over sim::kOnFaceM means free; only below is IsOccupied
+    // needed (a face's point is in its solid).
     const double clearance = index.Clearance(c);
-    const bool occupied = clearance > 0.0 ? false : index.IsOccupied(c);
+    const bool occupied = clearance > sim::kOnFaceM ? false : index.IsOccupied(c);
     truth.free[row + a] = occupied ? 0 : 255;
     truth.fits[row + a] = clearance > radius ? 1 : 0;
     const double spare_cells = (clearance - radius - kLipschitzSlackM) / g.resolution();

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -125,6 +126,36 @@ TEST(ReachableCellsTest, SkippingCellsGivesWhatAskingEveryCellGives) {
     ExpectAsAskingEveryCell(world, core::GridGeometry(cell, {0.0, 0.0}, 1, 1), name);
     // Off the world's lattice.
     ExpectAsAskingEveryCell(world, core::GridGeometry(cell, {-0.0037, 0.0061}, 1, 1), name);
+  }
+}
+
+TEST(ReachableCellsTest, AWallOneCellThickWhoseFacesFallOnCentresIsInTheTruth) {
+  // Walls 1 cm thick along whole centimetres, on a 1 cm grid from the
+  // origin: every face passes through a row (or column) of cell centres,
+  // which lie on the wall and so in it. (Before, rounding put each row in
+  // the wall or out of it, 1e-17 m either way: generated maze 107's wall
+  // along y = 1.76 was missing from the truth.)
+  const double t = 0.01;
+  std::vector<sim::Solid> walls;
+  const std::vector<double> ys = {0.07, 0.13, 0.29, 0.41, 0.53};
+  const std::vector<double> xs = {0.11, 0.37, 0.63, 0.89};
+  for (const double y : ys) walls.push_back(sim::MakeWall({0.05, y}, {0.95, y}, t, 0.1, kWhite));
+  for (const double x : xs) walls.push_back(sim::MakeWall({x, 0.02}, {x, 0.58}, t, 0.1, kWhite));
+  const sim::World world = MakeWorld(std::move(walls), {0.2, 0.2});
+  const core::GridGeometry grid(0.01, {0.0, 0.0}, 100, 60);
+  const Reachability truth = ReachableCells(world, grid);
+  const auto occupied = [&](int x, int y) { return truth.free[truth.window.Flat(x, y)] == 0; };
+  for (const double y : ys) {
+    const int below = static_cast<int>(std::lround(y / 0.01)) - 1;  // the rows either face passes
+    for (int x = 6; x <= 94; ++x) {
+      EXPECT_TRUE(occupied(x, below) && occupied(x, below + 1)) << "y " << y << " x " << x;
+    }
+  }
+  for (const double x : xs) {
+    const int left = static_cast<int>(std::lround(x / 0.01)) - 1;
+    for (int y = 3; y <= 56; ++y) {
+      EXPECT_TRUE(occupied(left, y) && occupied(left + 1, y)) << "x " << x << " y " << y;
+    }
   }
 }
 

@@ -87,7 +87,7 @@ bool ClearanceIndex::IsOccupied(const Eigen::Vector2d& p) const {
   const std::vector<Solid>& solids = world_.solids();
   const std::vector<std::int32_t>& bucket = BucketOf(p);
   return std::any_of(bucket.begin(), bucket.end(), [&](std::int32_t s) {
-    return solids[static_cast<std::size_t>(s)].SignedDistance(p) <= 0.0;
+    return solids[static_cast<std::size_t>(s)].SignedDistance(p) <= kOnFaceM;
   });
 }
 

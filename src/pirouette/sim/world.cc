@@ -208,7 +208,7 @@ bool World::OnFloor(const Eigen::Vector2d& p) const {
 bool World::IsOccupied(const Eigen::Vector2d& p) const {
   if (!OnFloor(p)) return true;
   return std::any_of(solids_.begin(), solids_.end(),
-                     [&p](const Solid& solid) { return solid.SignedDistance(p) <= 0.0; });
+                     [&p](const Solid& solid) { return solid.SignedDistance(p) <= kOnFaceM; });
 }
 
 double World::Clearance(const Eigen::Vector2d& p) const {

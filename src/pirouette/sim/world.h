@@ -13,6 +13,14 @@
 namespace pirouette::sim {
 
 // The floor is the rectangle [0, size.x] × [0, size.y] at z = 0.
+// A point this near a solid (metres) lies on its face, and so in it: a
+// solid is closed. Far above the rounding of a face's distance (~1e-17 m on
+// a floor of metres), far below any cell. Without it, a point on a face was
+// in the solid or not by that rounding: on a 1 cm grid whose centres fell on
+// both faces of a 1 cm wall (a generated maze's wall along a whole
+// centimetre), the wall was in the truth of eval or not.
+inline constexpr double kOnFaceM = 1e-9;
+
 struct Floor {
   Eigen::Vector2d size = Eigen::Vector2d::Zero();
   core::Rgb colour;
@@ -104,10 +112,11 @@ class World {
   const RobotSpec& robot() const { return robot_; }
 
   bool OnFloor(const Eigen::Vector2d& p) const;
-  // True where p lies inside a solid or off the floor (the ground truth of SPEC.md's eval).
+  // True where p lies inside a solid (or on its face, within kOnFaceM) or
+  // off the floor (the ground truth of SPEC.md's eval).
   bool IsOccupied(const Eigen::Vector2d& p) const;
   // The distance from p to the nearest occupied point (a solid or the floor's
-  // edge); 0 where p is occupied.
+  // edge); 0 inside a solid or off the floor (on a face, at most kOnFaceM).
   double Clearance(const Eigen::Vector2d& p) const;
   // True where a disc of `radius` centred at p touches nothing occupied.
   bool DiscFits(const Eigen::Vector2d& p, double radius) const { return Clearance(p) > radius; }
