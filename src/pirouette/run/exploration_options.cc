@@ -1,6 +1,8 @@
 #include "pirouette/run/exploration_options.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "pirouette/core/input_error.h"
@@ -50,13 +52,22 @@ localize::OdometryModel GraphOdometryModel(const ExplorationOptions& options,
   return model;
 }
 
+int DefaultMaxSteps(double floor_area_m2, double radius_m) {
+  // Beyond this the limit would not stop a run in circles within a day.
+  constexpr double kMostSteps = 1e6;
+  const double disc_m2 = std::numbers::pi * radius_m * radius_m;
+  if (!(floor_area_m2 > 0.0) || !(disc_m2 > 0.0)) return kDefaultMaxSteps;
+  const double steps = std::ceil(kDefaultStepsPerDisc * floor_area_m2 / disc_m2);
+  return static_cast<int>(std::clamp(steps, static_cast<double>(kDefaultMaxSteps), kMostSteps));
+}
+
 void CheckExplorationOptions(const ExplorationOptions& options) {
   try {
     options.occupancy.Check();
   } catch (const std::invalid_argument& e) {
     throw core::InputError("sensor model", 0, "", e.what());
   }
-  if (options.max_steps < 1) {
+  if (options.max_steps < 0) {
     throw core::InputError("--max-steps", 0, "", "must be at least 1");
   }
   if (options.cell_m < 0.0 || !std::isfinite(options.cell_m) ||

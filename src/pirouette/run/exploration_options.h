@@ -41,10 +41,23 @@ std::optional<PlannerKind> ParsePlannerKind(std::string_view name);
 inline constexpr mapping::OccupancyOptions kExplorationOccupancy{.hit_probability = 0.8,
                                                                  .miss_probability = 0.18};
 
-// The most straight moves a run makes by default before it stops with status
-// "step-limit": far more than any shipped world needs (the apartment takes a
-// few hundred), so that only a run that goes round in circles meets it.
+// The most straight moves a run on a robot makes by default before it stops
+// with status "step-limit": far more than any shipped world needs (the
+// apartment takes a few hundred), so that only a run that goes round in
+// circles meets it. In the simulator the floor's size is known and the
+// default grows with it (DefaultMaxSteps).
 inline constexpr int kDefaultMaxSteps = 2000;
+
+// Straight moves allowed by default for each robot disc's area of floor: a
+// run's moves grow with the floor's area over the robot's (mazes explored by
+// the paper's robot needed up to 1.7 a disc, apartments 0.6), so a fixed
+// limit stopped large worlds and mazes still exploring.
+inline constexpr double kDefaultStepsPerDisc = 4.0;
+
+// The default step limit in the simulator for a floor of `floor_area_m2`
+// and a robot of radius `radius_m`: kDefaultStepsPerDisc a disc's area of
+// floor, and at least kDefaultMaxSteps.
+int DefaultMaxSteps(double floor_area_m2, double radius_m);
 
 // What a live view with --view-control may ask of a run (LiveServer's
 // ControlCommand), read between the run's steps: while `pause` is set the
@@ -62,8 +75,9 @@ struct ExplorationOptions {
   std::uint64_t seed = 1;
   PlannerKind planner = PlannerKind::kDistanceTransform;
   vision::MaskSource method = vision::MaskSource::kDefault;
-  // Straight moves allowed before the run stops with status "step-limit".
-  int max_steps = kDefaultMaxSteps;
+  // Straight moves allowed before the run stops with status "step-limit";
+  // 0: the default (DefaultMaxSteps in the simulator, else kDefaultMaxSteps).
+  int max_steps = 0;
   // The map's cell; 0: 1 cm for a robot of radius under 0.1 m (the paper's),
   // else 2 cm (the apartment robot).
   double cell_m = 0.0;

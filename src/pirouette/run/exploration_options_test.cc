@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "pirouette/core/input_error.h"
@@ -54,6 +55,30 @@ TEST(GraphOdometryModelTest, ABadModelIsRefusedNamingTheOption) {
   }
   options.odometry_model = {0.05, 0.05};
   EXPECT_NO_THROW(CheckExplorationOptions(options));
+}
+
+TEST(DefaultMaxStepsTest, GrowsWithTheFloorsAreaInRobotDiscs) {
+  // The paper's robot (radius 4 cm) in a 2.77 x 2.59 m maze: 4 a disc.
+  const double disc = std::numbers::pi * 0.04 * 0.04;
+  EXPECT_EQ(DefaultMaxSteps(2.77 * 2.59, 0.04),
+            static_cast<int>(std::ceil(kDefaultStepsPerDisc * 2.77 * 2.59 / disc)));
+  EXPECT_GT(DefaultMaxSteps(2.77 * 2.59, 0.04), kDefaultMaxSteps);
+  // Twice the floor, twice the moves; a robot twice as wide, a quarter.
+  EXPECT_NEAR(DefaultMaxSteps(400.0, 0.15), 2.0 * DefaultMaxSteps(200.0, 0.15), 1.0);
+  EXPECT_NEAR(DefaultMaxSteps(200.0, 0.3), 0.25 * DefaultMaxSteps(200.0, 0.15), 1.0);
+  // Never under the robot default; nonsense sizes give it.
+  EXPECT_EQ(DefaultMaxSteps(1.0, 0.15), kDefaultMaxSteps);
+  EXPECT_EQ(DefaultMaxSteps(0.0, 0.15), kDefaultMaxSteps);
+  EXPECT_EQ(DefaultMaxSteps(10.0, 0.0), kDefaultMaxSteps);
+  EXPECT_EQ(DefaultMaxSteps(std::nan(""), 0.1), kDefaultMaxSteps);
+}
+
+TEST(DefaultMaxStepsTest, ZeroMeansTheDefaultANegativeLimitIsRefused) {
+  ExplorationOptions options;
+  EXPECT_EQ(options.max_steps, 0);
+  EXPECT_NO_THROW(CheckExplorationOptions(options));
+  options.max_steps = -1;
+  EXPECT_THROW(CheckExplorationOptions(options), core::InputError);
 }
 
 }  // namespace

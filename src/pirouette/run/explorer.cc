@@ -363,7 +363,8 @@ bool Explorer::Drive(double metres) {
     if (metres > 0.0 && std::abs(outcome.achieved) < kReachedCells * cell_m_) BackOffContact();
   }
   Report();
-  if (result_.moves >= options_.max_steps && result_.status.empty()) {
+  const int max_steps = options_.max_steps > 0 ? options_.max_steps : kDefaultMaxSteps;
+  if (result_.moves >= max_steps && result_.status.empty()) {
     result_.status = "step-limit";
   }
   return !outcome.stopped_at_contact;

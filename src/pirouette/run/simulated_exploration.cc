@@ -18,6 +18,10 @@ ExplorationResult Explore(const sim::World& world, const ExplorationOptions& opt
   const camera::CameraModel& camera = world.robot().camera;
   ExplorationOptions explore_options = options;
   explore_options.graph.odometry = GraphOdometryModel(options, &world.robot().odometry_noise);
+  if (explore_options.max_steps == 0) {
+    explore_options.max_steps =
+        DefaultMaxSteps(world.floor().size.x() * world.floor().size.y(), world.robot().radius);
+  }
   sim::SimulatedRobot simulated(world, options.seed, options.odometry_noise);
   sim::SimRobot& robot = simulated.robot();
   eval::FloorMasker masker(options.method, world, camera);
