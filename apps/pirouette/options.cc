@@ -1,6 +1,7 @@
 #include "apps/pirouette/options.h"
 
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -183,7 +184,7 @@ CLI::Option* AddMaxStepsOption(CLI::App* app, int& max_steps) {
           "straight moves a run may make; then it stops (status step-limit). Default: "
           "in the simulator 4 for each robot disc's area of floor, at least 2000; on a robot "
           "2000")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()).description(">= 1"));
 }
 
 void AddOdometryOptions(CLI::App* app, std::vector<double>& noise, std::vector<double>& bias) {
