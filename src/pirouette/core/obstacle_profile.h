@@ -36,6 +36,13 @@ struct ObstacleProfile {
   std::vector<RangeReading> feet;  // all kHit, within max_range_m
 };
 
+// A column that meets an obstacle this many image rows or more above the
+// image of its base meets the obstacle's side, not its base: the extractor
+// (vision::ExtractProfile, by its walk down the vertical) and the ray-cast
+// truth (sim::RayCaster::TrueProfile) tell it by the same count. Fewer rows
+// are a base line sloping across the columns.
+inline constexpr int kMinSideRows = 3;
+
 // How a profile's readings read: counts of each kind (the columns'), its
 // feet, and the nearest hit, a column's or a foot's.
 struct ProfileCounts {

@@ -13,10 +13,6 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Bisections of a pixel step at a floor's edge: 2^-10 pixel.
 constexpr int kEdgeBisections = 10;
-// A ray meeting an obstacle this many rows or more above the image of the
-// point's foot meets it above its base (TrueProfile), as
-// vision::ExtractProfile tells it by its walk down the vertical.
-constexpr double kAboveBaseRows = 3.0;
 
 }  // namespace
 
@@ -226,7 +222,7 @@ core::ObstacleProfile RayCaster::TrueProfile(const core::Pose2& world_T_robot,
         if (hit.kind == RayHit::Kind::kSolid) {
           const Eigen::Vector3d foot(hit.p_world.x(), hit.p_world.y(), 0.0);
           const std::optional<Eigen::Vector2d> foot_pixel = camera_.Project(camera_T_world * foot);
-          if (!foot_pixel || foot_pixel->y() - not_floor >= kAboveBaseRows) {
+          if (!foot_pixel || foot_pixel->y() - not_floor >= core::kMinSideRows) {
             found = reading(edge, std::min(edge.norm(), max_range_m), core::ReadingKind::kClear);
           }
         }

@@ -89,16 +89,15 @@ core::RangeReading ObstacleReading(const cv::Mat1b& mask, const cv::Mat1b& unres
                                    const VerticalDirectionField* vertical, int u, int v,
                                    const Eigen::Vector2f& below, double max_range_m,
                                    std::vector<core::RangeReading>& feet) {
-  // A base line sloping across the columns lets the walk slide a row or two
-  // along it: that is still the base.
-  constexpr int kMinSideRows = 3;
+  // (core::kMinSideRows: a base line sloping across the columns lets the
+  // walk slide a row or two along it, and that is still the base.)
   const std::optional<Eigen::Vector2f> here = ipm.At(u, v);
   const Eigen::Vector2f edge = here ? Eigen::Vector2f(0.5f * (*here + below)) : below;
   if (vertical == nullptr || !Resolved(unresolved, u, v)) {
     return EdgeReading(edge, unresolved, u, v, max_range_m);
   }
   const SideWalk walk = WalkDown(mask, *vertical, u, v);
-  if (walk.rows < kMinSideRows && !walk.bottom) {
+  if (walk.rows < core::kMinSideRows && !walk.bottom) {
     return EdgeReading(edge, unresolved, u, v, max_range_m);
   }
   const int foot_v = v + walk.rows;
