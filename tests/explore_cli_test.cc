@@ -83,6 +83,35 @@ TEST(ExploreCliTest, WritesTheMapFilesRunJsonAndVideo) {
   EXPECT_EQ(evaluated["cells"], json["eval"]["cells"]);
 }
 
+// A run that ends complete gives up the goals it could not reach or see,
+// and says so: run.json's given_up lists each with where the robot stood
+// and why, so that unknown floor left behind is a reading job. On the
+// soccer field the unknown cells round a stop past the field's edge are
+// given up after the robot stepped away to look back at them.
+TEST(ExploreCliTest, RunJsonListsTheGoalsGivenUpAndWhy) {
+  const TempDir dir("pirouette_explore_cli_given_up");
+  const fs::path out = dir.path() / "out";
+  const RunResult run = RunPirouette("explore --world " + World("soccer_field") + " --out " +
+                                     out.string() + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.output();
+  const nlohmann::json json = nlohmann::json::parse(Slurp(out / "run.json"));
+  EXPECT_EQ(json["status"], "complete");
+  const nlohmann::json& given_up = json["given_up"];
+  ASSERT_TRUE(given_up.is_array());
+  ASSERT_FALSE(given_up.empty());
+  bool nearby = false;
+  for (const nlohmann::json& g : given_up) {
+    ASSERT_EQ(g["goal"].size(), 2U) << g;
+    ASSERT_EQ(g["robot"].size(), 2U) << g;
+    EXPECT_FALSE(g["why"].get<std::string>().empty()) << g;
+    if (g.contains("cells")) {
+      EXPECT_GT(g["cells"].get<int>(), 0) << g;
+      nearby = nearby || g["why"].get<std::string>().starts_with("unknown near a stop");
+    }
+  }
+  EXPECT_TRUE(nearby) << given_up;
+}
+
 TEST(ExploreCliTest, BadInputIsRefusedWithExitTwo) {
   const TempDir dir("pirouette_explore_cli");
   const fs::path out = dir.path() / "out";

@@ -35,6 +35,17 @@ struct FrameEvent {
   const mapping::OccupancyGrid& grid;
 };
 
+// A goal the run gave up (no planner offers it again), for run.json's
+// `given_up`: where the goal was and the robot stood, in the map frame, and
+// why. Unknown cells near a stop given up together are one entry: `goal`
+// their centroid, `cells` how many (0 for a planner's goal).
+struct GivenUpGoal {
+  Eigen::Vector2d goal_world = Eigen::Vector2d::Zero();
+  Eigen::Vector2d robot_world = Eigen::Vector2d::Zero();
+  std::string why;
+  int cells = 0;
+};
+
 // The whole run, as the robot knows it (odometry frame = world frame at the
 // start) and, for the report, the simulator's truth.
 struct ExplorationResult {
@@ -56,6 +67,9 @@ struct ExplorationResult {
   int contacts = 0;          // straight moves the robot's disc stopped by touching something
   int contact_backoffs = 0;  // of them, off a contact that stopped a move at once
   int probes = 0;            // legs across the camera's blind ring (ProbeAcrossTheBlindRing)
+  // The goals given up, in order: a run that ends `complete` with floor
+  // unseen gave up the goals that led there.
+  std::vector<GivenUpGoal> given_up;
   double path_length_m = 0.0;
   double rotation_deg = 0.0;
   double wall_time_s = 0.0;

@@ -156,6 +156,15 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   run["backups"] = result.backups;
   run["probes"] = result.probes;
   run["contacts"] = result.contacts;
+  run["given_up"] = nlohmann::json::array();
+  for (const GivenUpGoal& g : result.given_up) {
+    nlohmann::json entry = {
+        {"goal", {Round(g.goal_world.x(), 1e-3), Round(g.goal_world.y(), 1e-3)}},
+        {"robot", {Round(g.robot_world.x(), 1e-3), Round(g.robot_world.y(), 1e-3)}},
+        {"why", g.why}};
+    if (g.cells > 0) entry["cells"] = g.cells;
+    run["given_up"].push_back(std::move(entry));
+  }
   if (!eval.is_null()) run["eval"] = eval;
   return run;
 }

@@ -239,7 +239,7 @@ void Explorer::Loop() {
     if (plan->waypoints_world.empty() && AtLastPirouette()) {
       // Already looked all round from here and the goal stays unknown:
       // it cannot be seen from here; the planner is not to offer it again.
-      planner->ReportUnreachable(*plan);
+      GiveUp(*planner, *plan, "still unknown after a pirouette where the robot stands");
       continue;
     }
     const FollowOutcome outcome = Follow(*plan);
@@ -249,7 +249,17 @@ void Explorer::Loop() {
       // (within a quarter cell), and looking all round again would show
       // nothing new. Blocked on a second look: nothing was left to explore,
       // and a second look is not worth a stuck run.
-      planner->ReportUnreachable(*plan);
+      if (outcome == FollowOutcome::kReached) {
+        GiveUp(*planner, *plan, "reached, after a pirouette there had left it unknown");
+      } else {
+        GiveUp(
+            *planner, *plan,
+            fmt::format("{} blocked: {}",
+                        corroborating                        ? "a second look's way"
+                        : planner == narrower_planner_.get() ? "a way for a robot a cell narrower"
+                                                             : "a way on the map's own cells",
+                        block_why_));
+      }
     } else if (outcome == FollowOutcome::kReached) {
       failures = 0;
       Pirouette();
@@ -257,7 +267,9 @@ void Explorer::Loop() {
       // and the goal is not checked again.
       if (verifying || corroborating) planner->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kBlocked) {
-      if (++failures % kFailuresPerGiveUp == 0) planner->ReportUnreachable(*plan);
+      if (++failures % kFailuresPerGiveUp == 0) {
+        GiveUp(*planner, *plan, fmt::format("{} plans in a row blocked: {}", failures, block_why_));
+      }
       if (failures >= kMaxFailures) {
         result_.status = "stuck";
         result_.reason = fmt::format(
@@ -410,12 +422,14 @@ Explorer::FollowOutcome Explorer::Follow(const explore::Plan& plan) {
                                       look_.SweptHalfWidth())) {
         BackUpToSee();
         ++result_.blocked_looks;
+        block_why_ = "the view ahead was filled by something near";
         return FollowOutcome::kBlocked;
       }
       if (verdict == explore::LookVerdict::kBlocked) {
         mapper_.ConfirmBlocking(profile, last_seen_.pose, leg);
         if (observer_.on_blocked) observer_.on_blocked(leg);
         ++result_.blocked_looks;
+        block_why_ = "the look before a move saw an obstacle on the leg";
         return FollowOutcome::kBlocked;
       }
       // Past where the floor ahead is unresolved the frame vouches for
@@ -423,12 +437,32 @@ Explorer::FollowOutcome Explorer::Follow(const explore::Plan& plan) {
       const double vouched = std::min(leg, finding.seen_m);
       if (vouched < kReachedCells * cell_m_) {
         ++result_.blocked_looks;
+        block_why_ = "the look before a move did not see the floor ahead";
         return FollowOutcome::kBlocked;
       }
-      if (!Drive(vouched)) return FollowOutcome::kBlocked;
+      if (!Drive(vouched)) {
+        block_why_ = "a contact stopped a move";
+        return FollowOutcome::kBlocked;
+      }
     }
   }
   return FollowOutcome::kReached;
+}
+
+void Explorer::GiveUp(explore::Planner& planner, const explore::Plan& plan, std::string why) {
+  planner.ReportUnreachable(plan);
+  result_.given_up.push_back({plan.goal_world, Pose().translation(), std::move(why), 0});
+}
+
+void Explorer::GiveUpNearby(const std::vector<WorldCell>& cells, std::string why) {
+  if (cells.empty()) return;
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (const WorldCell& key : cells) {
+    sum += CentreOf(key);
+    given_up_.insert(key);
+  }
+  result_.given_up.push_back({sum / static_cast<double>(cells.size()), Pose().translation(),
+                              std::move(why), static_cast<int>(cells.size())});
 }
 
 mapping::TrinaryMap Explorer::PlanningMap() const {

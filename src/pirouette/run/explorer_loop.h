@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -84,6 +85,10 @@ class Explorer {
   // Follows a plan's waypoints: for each leg, face it, then in pieces no
   // longer than the camera checks, look and drive.
   FollowOutcome Follow(const explore::Plan& plan);
+
+  // Tells `planner` the plan's goal is not to be offered again and records
+  // it, with `why`, in the result's given_up.
+  void GiveUp(explore::Planner& planner, const explore::Plan& plan, std::string why);
 
   // The map the planner sees: unknown cells the robot cannot see from here
   // (under the camera, within its near range, when it has just looked all
@@ -209,6 +214,8 @@ class Explorer {
   // look back. What stays unknown after that is given up. False when there is
   // nothing to see or nowhere to go.
   bool StepAwayToSeeNearby();
+  // Records unknown cells near a stop given up together (given_up_).
+  void GiveUpNearby(const std::vector<WorldCell>& cells, std::string why);
 
   // Out of the ring the camera cannot see, when no plan starts here: in a
   // corridor narrower than twice the camera's near range (a maze's) the
@@ -265,6 +272,7 @@ class Explorer {
   int step_aways_ = 0;
   std::set<std::pair<WorldCell, int>> probes_tried_;  // (place, heading) probed
   int corroboration_trips_ = 0;
+  std::string block_why_;                      // what ended the last plan Follow found blocked
   bool looked_since_drive_ = false;            // a frame was taken where the robot stands
   std::vector<std::size_t> pirouette_frames_;  // each pirouette's first frame
   Clock::time_point start_;

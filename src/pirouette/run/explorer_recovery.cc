@@ -97,7 +97,9 @@ bool Explorer::StepAwayToSeeNearby() {
   });
   // Ignore the robot's own footprint's rim and specks: not worth a trip.
   if (nearby.size() < kMinNearbyUnknown || step_aways_ >= kMaxStepAways) {
-    given_up_.insert(nearby.begin(), nearby.end());
+    GiveUpNearby(nearby, nearby.size() < kMinNearbyUnknown
+                             ? "unknown near a stop, too little for a trip to see it"
+                             : "unknown near a stop, after as many step-aways as a run makes");
     return false;
   }
   ++step_aways_;
@@ -119,10 +121,12 @@ bool Explorer::StepAwayToSeeNearby() {
     break;
   }
   // Whatever near the old stop is still unknown cannot be seen: give it up.
+  std::vector<WorldCell> unseen;
   for (const WorldCell& key : nearby) {
     const core::CellIndex c = mapper_.grid().geometry().CellOf(CentreOf(key));
-    if (mapper_.grid().State(c) == mapping::CellState::kUnknown) given_up_.insert(key);
+    if (mapper_.grid().State(c) == mapping::CellState::kUnknown) unseen.push_back(key);
   }
+  GiveUpNearby(unseen, "unknown near a stop, unseen after stepping away to look back");
   return true;
 }
 
