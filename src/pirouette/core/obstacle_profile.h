@@ -1,5 +1,7 @@
 #pragma once
 
+#include <Eigen/Core>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -21,6 +23,12 @@ struct RangeReading {
   double range_m = 0.0;      // from the robot's centre of rotation, on the floor
   ReadingKind kind = ReadingKind::kHit;
 };
+
+// The floor point reading `r` names, in the robot's frame (x forward, y to
+// the left): range_m along bearing_rad.
+inline Eigen::Vector2d PointOf(const RangeReading& r) {
+  return {r.range_m * std::cos(r.bearing_rad), r.range_m * std::sin(r.bearing_rad)};
+}
 
 // The obstacle profile of one frame: one reading per image column, left to
 // right (so bearings decrease), and the maximum range they were read with.

@@ -30,9 +30,8 @@ int PutText(cv::Mat3b& image, const std::string& text, int x, int y, const cv::V
 std::optional<Eigen::Vector2d> PixelOf(const core::RangeReading& r,
                                        const camera::CameraModel& camera,
                                        const Eigen::Isometry3d& camera_T_robot) {
-  const Eigen::Vector3d p_robot(r.range_m * std::cos(r.bearing_rad),
-                                r.range_m * std::sin(r.bearing_rad), 0.0);
-  return camera.Project(camera_T_robot * p_robot);
+  const Eigen::Vector2d p = core::PointOf(r);
+  return camera.Project(camera_T_robot * Eigen::Vector3d(p.x(), p.y(), 0.0));
 }
 
 }  // namespace

@@ -32,9 +32,7 @@ void CountHits(const core::ObstacleProfile& profile, const core::Pose2& world_T_
     for (const core::RangeReading& r : *readings) {
       if (r.kind != core::ReadingKind::kHit) continue;
       ++hits;
-      const Eigen::Vector2d p_world =
-          world_T_robot *
-          Eigen::Vector2d(r.range_m * std::cos(r.bearing_rad), r.range_m * std::sin(r.bearing_rad));
+      const Eigen::Vector2d p_world = world_T_robot * core::PointOf(r);
       if (world.Clearance(p_world) > gap_m) ++off;
     }
   }

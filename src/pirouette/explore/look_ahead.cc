@@ -18,8 +18,7 @@ LookAhead::Finding LookAhead::Blocking(const core::ObstacleProfile& profile,
   Finding finding;
   // The base of an obstacle inside the swept corridor.
   const auto add_hit = [&](const core::RangeReading& hit) {
-    const Eigen::Vector2d p(hit.range_m * std::cos(hit.bearing_rad),
-                            hit.range_m * std::sin(hit.bearing_rad));
+    const Eigen::Vector2d p = core::PointOf(hit);
     if (p.x() > 0.0 && core::DistanceToSegment(p, Eigen::Vector2d::Zero(), end) < r) {
       finding.hits_robot.push_back(p);
     }
@@ -28,8 +27,9 @@ LookAhead::Finding LookAhead::Blocking(const core::ObstacleProfile& profile,
   // A clear reading this much short of the max range is seen only to there.
   constexpr double kShortM = 1e-6;
   for (const core::RangeReading& reading : profile.readings) {
-    const double x = reading.range_m * std::cos(reading.bearing_rad);
-    const double y = reading.range_m * std::sin(reading.bearing_rad);
+    const Eigen::Vector2d p = core::PointOf(reading);
+    const double x = p.x();
+    const double y = p.y();
     if (reading.kind == core::ReadingKind::kClear) {
       if (reading.range_m < options_.max_range_m - kShortM && x > 0.0 &&
           std::abs(y) < options_.radius_m) {

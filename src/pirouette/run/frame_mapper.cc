@@ -319,9 +319,7 @@ std::vector<FrameMapper::ColourHit> FrameMapper::ColouredHits(
     if (r.kind != core::ReadingKind::kHit) continue;
     const core::ColourClass c = vision::ColumnColour(bgr, mask, static_cast<int>(u));
     if (c == core::ColourClass::kNone) continue;
-    hits.push_back({(r.range_m * Eigen::Vector2d(std::cos(r.bearing_rad), std::sin(r.bearing_rad)))
-                        .cast<float>(),
-                    c});
+    hits.push_back({core::PointOf(r).cast<float>(), c});
   }
   return hits;
 }
