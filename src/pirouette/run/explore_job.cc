@@ -156,12 +156,13 @@ nlohmann::json RunJson(const ExploreRequest& request, const ExplorationResult& r
   run["backups"] = result.backups;
   run["probes"] = result.probes;
   run["contacts"] = result.contacts;
+  const auto point_json = [](const Eigen::Vector2d& p) {
+    return nlohmann::json::array({Round(p.x(), 1e-3), Round(p.y(), 1e-3)});
+  };
   run["given_up"] = nlohmann::json::array();
   for (const GivenUpGoal& g : result.given_up) {
     nlohmann::json entry = {
-        {"goal", {Round(g.goal_world.x(), 1e-3), Round(g.goal_world.y(), 1e-3)}},
-        {"robot", {Round(g.robot_world.x(), 1e-3), Round(g.robot_world.y(), 1e-3)}},
-        {"why", g.why}};
+        {"goal", point_json(g.goal_world)}, {"robot", point_json(g.robot_world)}, {"why", g.why}};
     if (g.cells > 0) entry["cells"] = g.cells;
     run["given_up"].push_back(std::move(entry));
   }

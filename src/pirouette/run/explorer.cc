@@ -242,7 +242,8 @@ void Explorer::Loop() {
       GiveUp(*planner, *plan, "still unknown after a pirouette where the robot stands");
       continue;
     }
-    const FollowOutcome outcome = Follow(*plan);
+    const Followed followed = Follow(*plan);
+    const FollowOutcome outcome = followed.outcome;
     if ((outcome == FollowOutcome::kReached && AtLastPirouette()) ||
         (outcome == FollowOutcome::kBlocked && (corroborating || fine))) {
       // Reached: the plan's waypoints were all where the robot stands
@@ -258,7 +259,7 @@ void Explorer::Loop() {
                         corroborating                        ? "a second look's way"
                         : planner == narrower_planner_.get() ? "a way for a robot a cell narrower"
                                                              : "a way on the map's own cells",
-                        block_why_));
+                        followed.blocked_by));
       }
     } else if (outcome == FollowOutcome::kReached) {
       failures = 0;
@@ -268,7 +269,8 @@ void Explorer::Loop() {
       if (verifying || corroborating) planner->ReportUnreachable(*plan);
     } else if (outcome == FollowOutcome::kBlocked) {
       if (++failures % kFailuresPerGiveUp == 0) {
-        GiveUp(*planner, *plan, fmt::format("{} plans in a row blocked: {}", failures, block_why_));
+        GiveUp(*planner, *plan,
+               fmt::format("{} plans in a row blocked: {}", failures, followed.blocked_by));
       }
       if (failures >= kMaxFailures) {
         result_.status = "stuck";
@@ -397,11 +399,11 @@ void Explorer::Pirouette() {
   Report();
 }
 
-Explorer::FollowOutcome Explorer::Follow(const explore::Plan& plan) {
+Explorer::Followed Explorer::Follow(const explore::Plan& plan) {
   for (const Eigen::Vector2d& target :
        explore::MergeCollinear(Pose().translation(), plan.waypoints_world)) {
     while (true) {
-      if (!result_.status.empty() || Interrupted()) return FollowOutcome::kStopped;
+      if (!result_.status.empty() || Interrupted()) return {FollowOutcome::kStopped, {}};
       const core::Pose2 pose = Pose();
       const Eigen::Vector2d to = target - pose.translation();
       const double distance = to.norm();
@@ -422,31 +424,27 @@ Explorer::FollowOutcome Explorer::Follow(const explore::Plan& plan) {
                                       look_.SweptHalfWidth())) {
         BackUpToSee();
         ++result_.blocked_looks;
-        block_why_ = "the view ahead was filled by something near";
-        return FollowOutcome::kBlocked;
+        return {FollowOutcome::kBlocked, "the view ahead was filled by something near"};
       }
       if (verdict == explore::LookVerdict::kBlocked) {
         mapper_.ConfirmBlocking(profile, last_seen_.pose, leg);
         if (observer_.on_blocked) observer_.on_blocked(leg);
         ++result_.blocked_looks;
-        block_why_ = "the look before a move saw an obstacle on the leg";
-        return FollowOutcome::kBlocked;
+        return {FollowOutcome::kBlocked, "the look before a move saw an obstacle on the leg"};
       }
       // Past where the floor ahead is unresolved the frame vouches for
       // nothing: go as far as it does, and look again from there.
       const double vouched = std::min(leg, finding.seen_m);
       if (vouched < kReachedCells * cell_m_) {
         ++result_.blocked_looks;
-        block_why_ = "the look before a move did not see the floor ahead";
-        return FollowOutcome::kBlocked;
+        return {FollowOutcome::kBlocked, "the look before a move did not see the floor ahead"};
       }
       if (!Drive(vouched)) {
-        block_why_ = "a contact stopped a move";
-        return FollowOutcome::kBlocked;
+        return {FollowOutcome::kBlocked, "a contact stopped a move"};
       }
     }
   }
-  return FollowOutcome::kReached;
+  return {FollowOutcome::kReached, {}};
 }
 
 void Explorer::GiveUp(explore::Planner& planner, const explore::Plan& plan, std::string why) {

@@ -14,6 +14,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -44,6 +45,10 @@ class Explorer {
 
  private:
   enum class FollowOutcome { kReached, kBlocked, kStopped };
+  struct Followed {
+    FollowOutcome outcome = FollowOutcome::kReached;
+    std::string_view blocked_by;  // kBlocked: by what, for given_up's why
+  };
 
   // --- The loop (explorer.cc).
 
@@ -84,7 +89,7 @@ class Explorer {
 
   // Follows a plan's waypoints: for each leg, face it, then in pieces no
   // longer than the camera checks, look and drive.
-  FollowOutcome Follow(const explore::Plan& plan);
+  Followed Follow(const explore::Plan& plan);
 
   // Tells `planner` the plan's goal is not to be offered again and records
   // it, with `why`, in the result's given_up.
@@ -272,7 +277,6 @@ class Explorer {
   int step_aways_ = 0;
   std::set<std::pair<WorldCell, int>> probes_tried_;  // (place, heading) probed
   int corroboration_trips_ = 0;
-  std::string block_why_;                      // what ended the last plan Follow found blocked
   bool looked_since_drive_ = false;            // a frame was taken where the robot stands
   std::vector<std::size_t> pirouette_frames_;  // each pirouette's first frame
   Clock::time_point start_;

@@ -117,7 +117,7 @@ bool Explorer::StepAwayToSeeNearby() {
     if (!mapping::CorridorKnownFree(map, here, to, radius_m_)) continue;
     explore::Plan plan;
     plan.waypoints_world = {to};
-    if (Follow(plan) == FollowOutcome::kReached) Pirouette();
+    if (Follow(plan).outcome == FollowOutcome::kReached) Pirouette();
     break;
   }
   // Whatever near the old stop is still unknown cannot be seen: give it up.
@@ -185,7 +185,7 @@ bool Explorer::ProbeAcrossTheBlindRing(const mapping::TrinaryMap& planning) {
   probes_tried_.insert({place, best->heading});
   explore::Plan plan;
   plan.waypoints_world = {best->to};
-  if (Follow(plan) == FollowOutcome::kReached) Pirouette();
+  if (Follow(plan).outcome == FollowOutcome::kReached) Pirouette();
   return true;
 }
 
@@ -216,7 +216,7 @@ bool Explorer::ReturnHome() {
     if (!path) return false;
     explore::Plan plan = explore::PlanAlong(grid, *path, Pose().translation(), /*enter_goal=*/true);
     plan.waypoints_world.push_back(start_pose_.translation());
-    if (Follow(plan) == FollowOutcome::kReached) {
+    if (Follow(plan).outcome == FollowOutcome::kReached) {
       Turn(core::NormalizeAngle(start_pose_.heading() - Pose().heading()));
       result_.path.push_back(Pose());
       return true;
